@@ -1,0 +1,113 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+
+Application
+    touchFoam
+
+Group
+    grpSolidSolvers
+
+Description
+    Explicit large-strain solid dynamics with the TOUCH scheme: a Total
+    Lagrangian Upwind Cell-centred finite volume method for the first-order
+    system in linear momentum p and deformation gradient F, advanced by the
+    two-stage TVD Runge-Kutta method at the CFL time step (Haider, Lee, Gil,
+    Bonet, IJNME 109 (2017) 407-456).
+
+    Reads 0/lm (linear momentum, with the boundary conditions), optionally
+    0/F, constant/mechanicalProperties and the TOUCH entries of
+    system/fvSolution.  Writes lm, v, F, P, sigma, pressure, J, u and pointU.
+
+    A run that produces an inverted cell or a non-finite value stops with a
+    message after writing the last good state.  The optional controlDict
+    entry maxSteps stops (and writes) after that many steps.
+
+Usage
+    touchFoam [-parallel] [-case dir]
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "touchSolid.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Explicit large-strain solid dynamics with the TOUCH scheme"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    touchSolid solid(mesh);
+
+    const label maxSteps =
+        runTime.controlDict().getOrDefault<label>("maxSteps", -1);
+
+    if (!solid.valid())
+    {
+        FatalErrorInFunction
+            << "The initial state at time " << runTime.timeName()
+            << " has an inverted cell (det F <= 0) or a non-finite value"
+            << exit(FatalError);
+    }
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    for (label step = 1; runTime.run(); ++step)
+    {
+        runTime.setDeltaT(solid.stableDeltaT());
+        ++runTime;
+        const scalar dt = runTime.deltaTValue();
+
+        Info<< "Time = " << runTime.timeName() << "  deltaT = " << dt << nl;
+
+        solid.storeOldTime();
+        solid.advanceStage(1, dt);
+        solid.advanceStage(2, dt);
+
+        if (!solid.valid())
+        {
+            solid.restoreOldTime();
+            runTime.setTime(runTime.value() - dt, runTime.timeIndex() - 1);
+            solid.writeOutputFields();
+            runTime.writeNow();
+
+            FatalErrorInFunction
+                << "Inverted cell (det F <= 0) or non-finite value during"
+                << " the step to time " << runTime.value() + dt << nl
+                << "    The last good state is written at time "
+                << runTime.timeName() << nl
+                << exit(FatalError);
+        }
+
+        if (step == maxSteps)
+        {
+            Info<< "Reached maxSteps " << maxSteps << nl;
+            solid.writeOutputFields();
+            runTime.writeAndEnd();
+        }
+        else if (runTime.writeTime())
+        {
+            solid.writeOutputFields();
+        }
+
+        runTime.write();
+
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

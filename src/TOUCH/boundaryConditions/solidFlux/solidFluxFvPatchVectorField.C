@@ -1,0 +1,130 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+\*---------------------------------------------------------------------------*/
+
+#include "solidFluxFvPatchVectorField.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(solidFluxFvPatchVectorField, 0);
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+void Foam::solidFluxFvPatchVectorField::tractionFlux
+(
+    const interiorState& s,
+    const vectorField& tStar,
+    vectorField& pC,
+    vectorField& tC
+)
+{
+    forAll(pC, facei)
+    {
+        const tensor nn(sqr(s.n[facei]));
+        const tensor St(nn/s.Up + (tensor::I - nn)/s.Us);
+
+        pC[facei] = s.p[facei] + (St & (tStar[facei] - s.t[facei]));
+        tC[facei] = tStar[facei];
+    }
+}
+
+
+void Foam::solidFluxFvPatchVectorField::momentumFlux
+(
+    const interiorState& s,
+    const vectorField& pStar,
+    vectorField& pC,
+    vectorField& tC
+)
+{
+    forAll(pC, facei)
+    {
+        const tensor nn(sqr(s.n[facei]));
+        const tensor Sp(s.Up*nn + s.Us*(tensor::I - nn));
+
+        pC[facei] = pStar[facei];
+        tC[facei] = s.t[facei] + (Sp & (pStar[facei] - s.p[facei]));
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::solidFluxFvPatchVectorField::solidFluxFvPatchVectorField
+(
+    const fvPatch& p,
+    const DimensionedField<vector, volMesh>& iF
+)
+:
+    fvPatchVectorField(p, iF)
+{}
+
+
+Foam::solidFluxFvPatchVectorField::solidFluxFvPatchVectorField
+(
+    const fvPatch& p,
+    const DimensionedField<vector, volMesh>& iF,
+    const dictionary& dict
+)
+:
+    fvPatchVectorField(p, iF, dict, false)
+{
+    if (dict.found("value"))
+    {
+        fvPatchVectorField::operator=(vectorField("value", dict, p.size()));
+    }
+    else
+    {
+        fvPatchVectorField::operator=(patchInternalField());
+    }
+}
+
+
+Foam::solidFluxFvPatchVectorField::solidFluxFvPatchVectorField
+(
+    const solidFluxFvPatchVectorField& ptf,
+    const fvPatch& p,
+    const DimensionedField<vector, volMesh>& iF,
+    const fvPatchFieldMapper& mapper
+)
+:
+    fvPatchVectorField(ptf, p, iF, mapper)
+{}
+
+
+Foam::solidFluxFvPatchVectorField::solidFluxFvPatchVectorField
+(
+    const solidFluxFvPatchVectorField& ptf
+)
+:
+    fvPatchVectorField(ptf)
+{}
+
+
+Foam::solidFluxFvPatchVectorField::solidFluxFvPatchVectorField
+(
+    const solidFluxFvPatchVectorField& ptf,
+    const DimensionedField<vector, volMesh>& iF
+)
+:
+    fvPatchVectorField(ptf, iF)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::solidFluxFvPatchVectorField::write(Ostream& os) const
+{
+    fvPatchVectorField::write(os);
+    writeEntry("value", os);
+}
+
+
+// ************************************************************************* //

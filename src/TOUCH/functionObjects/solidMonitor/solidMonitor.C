@@ -1,0 +1,130 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+\*---------------------------------------------------------------------------*/
+
+#include "solidMonitor.H"
+#include "mechanicalLaw.H"
+#include "volFields.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(solidMonitor, 0);
+    addToRunTimeSelectionTable(functionObject, solidMonitor, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+void Foam::functionObjects::solidMonitor::writeFileHeader(Ostream& os)
+{
+    writeHeader(os, "Invariants of the solid");
+    writeHeaderValue(os, "Angular momentum about", origin_);
+    writeCommented(os, "Time");
+    for
+    (
+        const char* title
+      : {"px", "py", "pz", "Lx", "Ly", "Lz",
+         "kineticEnergy", "strainEnergy", "totalEnergy"}
+    )
+    {
+        writeTabbed(os, title);
+    }
+    os  << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::solidMonitor::solidMonitor
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict),
+    writeFile(mesh_, name, typeName, dict),
+    origin_(Zero)
+{
+    read(dict);
+
+    if (Pstream::master() && writeToFile())
+    {
+        writeFileHeader(file());
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::functionObjects::solidMonitor::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+    writeFile::read(dict);
+
+    origin_ = dict.getOrDefault<vector>("origin", Zero);
+
+    return true;
+}
+
+
+bool Foam::functionObjects::solidMonitor::execute()
+{
+    const mechanicalLaw& law =
+        mesh_.lookupObject<mechanicalLaw>("mechanicalProperties");
+    const volVectorField& lm = mesh_.lookupObject<volVectorField>("lm");
+    const volTensorField& F = mesh_.lookupObject<volTensorField>("F");
+    const volVectorField& u = mesh_.lookupObject<volVectorField>("u");
+
+    const scalarField& V = mesh_.V();
+    const vectorField& X = mesh_.C().primitiveField();
+
+    vector p(Zero);
+    vector L(Zero);
+    scalar kinetic = 0;
+
+    forAll(V, celli)
+    {
+        const vector& lmi = lm[celli];
+        p += V[celli]*lmi;
+        L += V[celli]*((X[celli] + u[celli] - origin_) ^ lmi);
+        kinetic += V[celli]*magSqr(lmi);
+    }
+
+    reduce(p, sumOp<vector>());
+    reduce(L, sumOp<vector>());
+    kinetic = returnReduce(kinetic, sumOp<scalar>())/(2*law.rho());
+
+    const scalar stored = law.totalStrainEnergy(F);
+
+    if (Pstream::master() && writeToFile())
+    {
+        OFstream& os = file();
+        os.precision(16);
+        writeCurrentTime(os);
+        os  << tab << p.x() << tab << p.y() << tab << p.z()
+            << tab << L.x() << tab << L.y() << tab << L.z()
+            << tab << kinetic << tab << stored << tab << kinetic + stored
+            << endl;
+    }
+
+    return true;
+}
+
+
+bool Foam::functionObjects::solidMonitor::write()
+{
+    return true;
+}
+
+
+// ************************************************************************* //

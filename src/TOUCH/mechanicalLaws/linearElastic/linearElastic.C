@@ -1,0 +1,50 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+\*---------------------------------------------------------------------------*/
+
+#include "linearElastic.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace mechanicalLaws
+{
+    defineTypeNameAndDebug(linearElastic, 0);
+    addToRunTimeSelectionTable(mechanicalLaw, linearElastic, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::mechanicalLaws::linearElastic::linearElastic(const fvMesh& mesh)
+:
+    mechanicalLaw(mesh)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::tensor Foam::mechanicalLaws::linearElastic::P(const tensor& F) const
+{
+    return mu_*(F + F.T() - 2*tensor::I) + lambda_*(tr(F) - 3)*tensor::I;
+}
+
+
+Foam::scalar Foam::mechanicalLaws::linearElastic::strainEnergy
+(
+    const tensor& F
+) const
+{
+    const tensor eps(symm(F) - tensor::I);
+
+    return mu_*(eps && eps) + 0.5*lambda_*sqr(tr(eps));
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,116 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+\*---------------------------------------------------------------------------*/
+
+#include "mechanicalLaw.H"
+#include "fvMesh.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(mechanicalLaw, 0);
+    defineRunTimeSelectionTable(mechanicalLaw, dictionary);
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::mechanicalLaw::readBounded
+(
+    const word& entry,
+    const scalar lower,
+    const scalar upper
+) const
+{
+    const scalar value = get<scalar>(entry);
+
+    if (!(value > lower && value < upper))
+    {
+        FatalIOErrorInFunction(*this)
+            << "Entry '" << entry << "' = " << value << " in "
+            << objectPath() << " is out of range: valid values satisfy "
+            << lower << " < " << entry << " < " << upper << nl
+            << exit(FatalIOError);
+    }
+
+    return value;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::mechanicalLaw::mechanicalLaw(const fvMesh& mesh)
+:
+    IOdictionary
+    (
+        IOobject
+        (
+            "mechanicalProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    mesh_(mesh),
+    rho_(readBounded("rho", 0, GREAT)),
+    E_(readBounded("E", 0, GREAT)),
+    nu_(readBounded("nu", -1, 0.5)),
+    mu_(E_/(2*(1 + nu_))),
+    lambda_(E_*nu_/((1 + nu_)*(1 - 2*nu_))),
+    kappa_(lambda_ + 2*mu_/3)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::mechanicalLaw::Up() const
+{
+    return Foam::sqrt((lambda_ + 2*mu_)/rho_);
+}
+
+
+Foam::scalar Foam::mechanicalLaw::Us() const
+{
+    return Foam::sqrt(mu_/rho_);
+}
+
+
+void Foam::mechanicalLaw::correct(const volTensorField& F, volTensorField& P)
+{
+    const tensorField& Fi = F.primitiveField();
+    tensorField& Pi = P.primitiveFieldRef();
+
+    forAll(Fi, celli)
+    {
+        Pi[celli] = this->P(Fi[celli]);
+    }
+
+    // Non-coupled boundary values are not used by the scheme; the processor
+    // values must be exchanged so neighbours see the same stress as in serial
+    P.correctBoundaryConditions();
+}
+
+
+Foam::scalar Foam::mechanicalLaw::totalStrainEnergy
+(
+    const volTensorField& F
+) const
+{
+    const scalarField& V = mesh_.V();
+    scalar energy = 0;
+
+    forAll(V, celli)
+    {
+        energy += V[celli]*strainEnergy(F[celli]);
+    }
+
+    return returnReduce(energy, sumOp<scalar>());
+}
+
+
+// ************************************************************************* //

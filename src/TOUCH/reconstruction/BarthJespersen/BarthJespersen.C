@@ -1,0 +1,31 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+\*---------------------------------------------------------------------------*/
+
+#include "BarthJespersen.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace gradientLimiters
+{
+    defineTypeNameAndDebug(BarthJespersen, 0);
+    addToRunTimeSelectionTable(gradientLimiter, BarthJespersen, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::gradientLimiters::BarthJespersen::limiter(const scalar r) const
+{
+    return min(scalar(1), r);
+}
+
+
+// ************************************************************************* //

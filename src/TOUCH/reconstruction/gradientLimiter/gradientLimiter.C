@@ -1,0 +1,45 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+\*---------------------------------------------------------------------------*/
+
+#include "gradientLimiter.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(gradientLimiter, 0);
+    defineRunTimeSelectionTable(gradientLimiter, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::gradientLimiter> Foam::gradientLimiter::New
+(
+    const dictionary& dict
+)
+{
+    const word limiterType(dict.get<word>("limiter"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(limiterType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "limiter",
+            limiterType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<gradientLimiter>(cstrIter()(dict));
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,771 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+\*---------------------------------------------------------------------------*/
+
+#include "touchSolid.H"
+#include "solidFluxFvPatchVectorField.H"
+#include "emptyFvPatch.H"
+#include "calculatedFvPatchFields.H"
+#include "calculatedPointPatchFields.H"
+#include "volPointInterpolation.H"
+#include "Switch.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(touchSolid, 0);
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- Spatial unit normal n = F^-T N/|F^-T N|, via the cofactor (J F^-T)
+static inline vector spatialNormal(const tensor& F, const vector& N)
+{
+    const vector n(cof(F) & N);
+    return n/mag(n);
+}
+
+
+//- Smallest eigenvalue of a symmetric tensor, by the trigonometric solution
+//  of the characteristic cubic (Smith, Comm. ACM 4 (1961) 168), which stays
+//  real for repeated roots where a general cubic solver reports complex ones
+static inline scalar minEigenValue(const symmTensor& A)
+{
+    const scalar q = tr(A)/3;
+    const scalar p1 = sqr(A.xy()) + sqr(A.xz()) + sqr(A.yz());
+    const scalar p2 =
+        sqr(A.xx() - q) + sqr(A.yy() - q) + sqr(A.zz() - q) + 2*p1;
+    const scalar p = Foam::sqrt(p2/6);
+
+    if (p <= SMALL*mag(q))
+    {
+        return q;
+    }
+
+    const scalar r = det((A - q*symmTensor::I)/p)/2;
+    const scalar phi = Foam::acos(min(max(r, scalar(-1)), scalar(1)))/3;
+
+    return q + 2*p*Foam::cos(phi + constant::mathematical::twoPi/3);
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+void Foam::touchSolid::checkBoundaryConditions() const
+{
+    if (lm_.dimensions() != dimDensity*dimVelocity)
+    {
+        FatalErrorInFunction
+            << "Field " << lm_.objectPath() << " has dimensions "
+            << lm_.dimensions() << "; linear momentum needs "
+            << dimDensity*dimVelocity << " [kg/(m^2 s)]" << nl
+            << exit(FatalError);
+    }
+
+    forAll(lm_.boundaryField(), patchi)
+    {
+        const fvPatchVectorField& pf = lm_.boundaryField()[patchi];
+
+        if
+        (
+            !pf.coupled()
+         && !isA<emptyFvPatch>(pf.patch())
+         && !isA<solidFluxFvPatchVectorField>(pf)
+        )
+        {
+            FatalErrorInFunction
+                << "Entry boundaryField/" << pf.patch().name() << "/type '"
+                << pf.type() << "' in " << lm_.objectPath()
+                << " is not a solid boundary condition." << nl
+                << "Valid types: symmetricPlane skewSymmetricPlane clamped"
+                << " prescribedVelocity traction" << nl
+                << exit(FatalError);
+        }
+    }
+}
+
+
+Foam::scalar Foam::touchSolid::calcHmin() const
+{
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& X = reconstruction_.X().primitiveField();
+    const vectorField& Cf = mesh_.faceCentres();
+    const vectorField& Sf = mesh_.faceAreas();
+
+    // The distance between neighbouring centres normal to their face:
+    // the cell size for hexahedra, the inscribed scale for tetrahedra
+    scalar h = GREAT;
+
+    forAll(own, facei)
+    {
+        const vector N(Sf[facei]/mag(Sf[facei]));
+        h = min(h, mag((X[nei[facei]] - X[own[facei]]) & N));
+    }
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        const labelUList& faceCells = patch.faceCells();
+
+        if (patch.coupled())
+        {
+            const vectorField Xn
+            (
+                reconstruction_.X().boundaryField()[patchi]
+               .patchNeighbourField()
+            );
+
+            forAll(faceCells, i)
+            {
+                const label facei = patch.start() + i;
+                const vector N(Sf[facei]/mag(Sf[facei]));
+                h = min(h, mag((Xn[i] - X[faceCells[i]]) & N));
+            }
+        }
+        else
+        {
+            forAll(faceCells, i)
+            {
+                const label facei = patch.start() + i;
+                const vector N(Sf[facei]/mag(Sf[facei]));
+                h = min(h, 2*mag((Cf[facei] - X[faceCells[i]]) & N));
+            }
+        }
+    }
+
+    return returnReduce(h, minOp<scalar>());
+}
+
+
+Foam::tmp<Foam::vectorField> Foam::touchSolid::cellPositions
+(
+    const vectorField& u
+) const
+{
+    return mesh_.C().primitiveField() + u;
+}
+
+
+void Foam::touchSolid::computeRates(const label stage)
+{
+    const scalar rho = law_->rho();
+
+    // Neighbour values across processor patches, then the stress and the
+    // limited gradients (exchanged as well)
+    lm_.correctBoundaryConditions();
+    F_.correctBoundaryConditions();
+    law_->correct(F_, P_);
+    reconstruction_.update(lm_, P_);
+
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& Sf = mesh_.faceAreas();
+    const vectorField& Cf = mesh_.faceCentres();
+    const vectorField& X = reconstruction_.X().primitiveField();
+
+    const vectorField& lm = lm_.primitiveField();
+    const tensorField& F = F_.primitiveField();
+    const tensorField& P = P_.primitiveField();
+    const tensorField& gp = reconstruction_.gradp().primitiveField();
+    const tensorField& gx = reconstruction_.gradP(0).primitiveField();
+    const tensorField& gy = reconstruction_.gradP(1).primitiveField();
+    const tensorField& gz = reconstruction_.gradP(2).primitiveField();
+
+    lmRate_ = Zero;
+    FRate_ = Zero;
+    torque_ = Zero;
+
+    // Flux of one face between a cell o (left) and a neighbour state (right)
+    // given by its values at the neighbour centre Xn
+    auto faceFlux = [&]
+    (
+        const label facei,
+        const label o,
+        const vector& lmN,
+        const tensor& PN,
+        const tensor& FN,
+        const tensor& gpN,
+        const tensor& gxN,
+        const tensor& gyN,
+        const tensor& gzN,
+        const vector& Xn,
+        vector& tC
+    )
+    {
+        const scalar magSf = mag(Sf[facei]);
+        const vector N(Sf[facei]/magSf);
+        const vector rL(Cf[facei] - X[o]);
+        const vector rR(Cf[facei] - Xn);
+
+        const vector pL(linearReconstruction::p(lm[o], gp[o], rL));
+        const vector pR(linearReconstruction::p(lmN, gpN, rR));
+        const vector tL(linearReconstruction::P(P[o], gx[o], gy[o], gz[o], rL) & N);
+        const vector tR(linearReconstruction::P(PN, gxN, gyN, gzN, rR) & N);
+        const vector n(spatialNormal(0.5*(F[o] + FN), N));
+
+        vector pC;
+        riemann_->flux(pL, tL, pR, tR, n, pC, tC);
+
+        tC *= magSf;
+        faceVelocity_[facei] = pC/rho;
+    };
+
+    forAll(own, facei)
+    {
+        const label o = own[facei];
+        const label n = nei[facei];
+        vector tC;
+
+        faceFlux
+        (
+            facei, o,
+            lm[n], P[n], F[n], gp[n], gx[n], gy[n], gz[n], X[n],
+            tC
+        );
+
+        lmRate_[o] += tC;
+        lmRate_[n] -= tC;
+    }
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        const labelUList& faceCells = patch.faceCells();
+
+        if (patch.coupled())
+        {
+            const vectorField lmN
+            (
+                lm_.boundaryField()[patchi].patchNeighbourField()
+            );
+            const tensorField PN
+            (
+                P_.boundaryField()[patchi].patchNeighbourField()
+            );
+            const tensorField FN
+            (
+                F_.boundaryField()[patchi].patchNeighbourField()
+            );
+            const tensorField gpN
+            (
+                reconstruction_.gradp().boundaryField()[patchi]
+               .patchNeighbourField()
+            );
+            const tensorField gxN
+            (
+                reconstruction_.gradP(0).boundaryField()[patchi]
+               .patchNeighbourField()
+            );
+            const tensorField gyN
+            (
+                reconstruction_.gradP(1).boundaryField()[patchi]
+               .patchNeighbourField()
+            );
+            const tensorField gzN
+            (
+                reconstruction_.gradP(2).boundaryField()[patchi]
+               .patchNeighbourField()
+            );
+            const vectorField XN
+            (
+                reconstruction_.X().boundaryField()[patchi]
+               .patchNeighbourField()
+            );
+
+            forAll(faceCells, i)
+            {
+                vector tC;
+
+                faceFlux
+                (
+                    patch.start() + i, faceCells[i],
+                    lmN[i], PN[i], FN[i], gpN[i], gxN[i], gyN[i], gzN[i],
+                    XN[i],
+                    tC
+                );
+
+                lmRate_[faceCells[i]] += tC;
+            }
+
+            continue;
+        }
+
+        if (patch.size() == 0)
+        {
+            continue;
+        }
+
+        // A solid boundary condition: the flux from the interior state
+        vectorField pM(patch.size());
+        vectorField tM(patch.size());
+        vectorField nM(patch.size());
+        vectorField xM(patch.size());
+        const scalarField& magSf = patch.magSf();
+
+        forAll(faceCells, i)
+        {
+            const label facei = patch.start() + i;
+            const label o = faceCells[i];
+            const vector N(Sf[facei]/magSf[i]);
+            const vector r(Cf[facei] - X[o]);
+
+            pM[i] = linearReconstruction::p(lm[o], gp[o], r);
+            tM[i] = linearReconstruction::P(P[o], gx[o], gy[o], gz[o], r) & N;
+            nM[i] = spatialNormal(F[o], N);
+            xM[i] = X[o] + u_[o] + (F[o] & r);
+        }
+
+        const solidFluxFvPatchVectorField::interiorState interior
+        {
+            pM, tM, nM, xM, rho, law_->Up(), law_->Us(), stage
+        };
+
+        vectorField pC(patch.size());
+        vectorField tC(patch.size());
+
+        refCast<const solidFluxFvPatchVectorField>
+        (
+            lm_.boundaryField()[patchi]
+        ).flux(interior, pC, tC);
+
+        forAll(faceCells, i)
+        {
+            lmRate_[faceCells[i]] += tC[i]*magSf[i];
+            torque_ += xM[i] ^ (tC[i]*magSf[i]);
+            faceVelocity_[patch.start() + i] = pC[i]/rho;
+        }
+
+        // The contact momentum is the boundary value points interpolate
+        lm_.boundaryFieldRef()[patchi] == pC;
+    }
+
+    reduce(torque_, sumOp<vector>());
+
+    // Point velocities from the cell and contact momenta
+    volPointInterpolation::New(mesh_).interpolate(lm_, pointV_);
+    pointV_.primitiveFieldRef() /= rho;
+
+    if (constrainedF_)
+    {
+        constrainedFRate();
+    }
+    else
+    {
+        // Plain TOUCH: the F flux carries the Riemann contact velocity
+        forAll(own, facei)
+        {
+            const tensor flux(faceVelocity_[facei]*Sf[facei]);
+            FRate_[own[facei]] += flux;
+            FRate_[nei[facei]] -= flux;
+        }
+
+        forAll(mesh_.boundary(), patchi)
+        {
+            const fvPatch& patch = mesh_.boundary()[patchi];
+
+            forAll(patch, i)
+            {
+                const label facei = patch.start() + i;
+                FRate_[patch.faceCells()[i]] +=
+                    faceVelocity_[facei]*Sf[facei];
+            }
+        }
+    }
+
+    const scalarField& V = mesh_.V();
+    forAll(V, celli)
+    {
+        lmRate_[celli] /= V[celli];
+        FRate_[celli] /= V[celli];
+    }
+}
+
+
+void Foam::touchSolid::constrainedFRate()
+{
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& Sf = mesh_.faceAreas();
+    const faceList& faces = mesh_.faces();
+    const vectorField& pointV = pointV_.primitiveField();
+
+    // Face velocity: the mean of its points' velocities, so that F stays
+    // the gradient of the point motion (curl-free)
+    auto faceMean = [&](const label facei)
+    {
+        const face& f = faces[facei];
+        vector v(Zero);
+        forAll(f, fp)
+        {
+            v += pointV[f[fp]];
+        }
+        return v/f.size();
+    };
+
+    forAll(own, facei)
+    {
+        const tensor flux(faceMean(facei)*Sf[facei]);
+        FRate_[own[facei]] += flux;
+        FRate_[nei[facei]] -= flux;
+    }
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh_.boundary()[patchi];
+
+        forAll(patch, i)
+        {
+            const label facei = patch.start() + i;
+            FRate_[patch.faceCells()[i]] += faceMean(facei)*Sf[facei];
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::touchSolid::touchSolid(const fvMesh& mesh)
+:
+    mesh_(mesh),
+    controls_(mesh.solutionDict().subDict("TOUCH")),
+    law_(mechanicalLaw::New(mesh)),
+    riemann_(riemannSolver::New(controls_, *law_)),
+    reconstruction_(mesh, controls_),
+    angularMomentum_(mesh),
+    CFL_(controls_.get<scalar>("CFL")),
+    preserveAngularMomentum_
+    (
+        controls_.get<Switch>("angularMomentumPreservation")
+    ),
+    constrainedF_(controls_.getOrDefault<Switch>("constrainedF", false)),
+    hMin_(calcHmin()),
+    lm_
+    (
+        IOobject
+        (
+            "lm",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh
+    ),
+    F_
+    (
+        IOobject
+        (
+            "F",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedTensor("I", dimless, tensor::I),
+        calculatedFvPatchTensorField::typeName
+    ),
+    u_
+    (
+        IOobject
+        (
+            "u",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedVector("0", dimLength, Zero),
+        calculatedFvPatchVectorField::typeName
+    ),
+    pointU_
+    (
+        IOobject
+        (
+            "pointU",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
+        pointMesh::New(mesh),
+        dimensionedVector("0", dimLength, Zero),
+        calculatedPointPatchVectorField::typeName
+    ),
+    P_
+    (
+        IOobject
+        (
+            "P",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedTensor("0", dimPressure, Zero),
+        calculatedFvPatchTensorField::typeName
+    ),
+    pointV_
+    (
+        IOobject
+        (
+            "pointV",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        pointMesh::New(mesh),
+        dimensionedVector("0", dimVelocity, Zero),
+        calculatedPointPatchVectorField::typeName
+    ),
+    lm0_(mesh.nCells()),
+    F0_(mesh.nCells()),
+    u0_(mesh.nCells()),
+    pointU0_(mesh.nPoints()),
+    lmRate_(mesh.nCells()),
+    lmRate1_(mesh.nCells()),
+    FRate_(mesh.nCells()),
+    faceVelocity_(mesh.nFaces(), Zero),
+    torque_(Zero),
+    torque1_(Zero),
+    L0_(Zero)
+{
+    if (!(CFL_ > 0 && CFL_ <= 1))
+    {
+        FatalIOErrorInFunction(controls_)
+            << "Entry 'CFL' = " << CFL_ << " in " << controls_.name()
+            << " is out of range: valid values satisfy 0 < CFL <= 1" << nl
+            << exit(FatalIOError);
+    }
+
+    checkBoundaryConditions();
+
+    Info<< "TOUCH: rho " << law_->rho() << ", Up " << law_->Up()
+        << ", Us " << law_->Us() << ", CFL " << CFL_
+        << ", h_min " << hMin_ << nl
+        << "    angular momentum preservation "
+        << (preserveAngularMomentum_ ? "on" : "off")
+        << ", F update " << (constrainedF_ ? "constrained" : "plain")
+        << nl << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::touchSolid::stableDeltaT() const
+{
+    // The fastest wave, Up, in the current configuration: reference lengths
+    // shrink by the smallest principal stretch
+    scalar minStretch = GREAT;
+
+    forAll(F_, celli)
+    {
+        const tensor& F = F_[celli];
+        minStretch = min(minStretch, minEigenValue(symm(F.T() & F)));
+    }
+
+    minStretch = Foam::sqrt(max(returnReduce(minStretch, minOp<scalar>()), 0));
+
+    return CFL_*hMin_*minStretch/law_->Up();
+}
+
+
+void Foam::touchSolid::storeOldTime()
+{
+    lm0_ = lm_.primitiveField();
+    F0_ = F_.primitiveField();
+    u0_ = u_.primitiveField();
+    pointU0_ = pointU_.primitiveField();
+
+    if (preserveAngularMomentum_)
+    {
+        L0_ = angularMomentum_.total(cellPositions(u0_), lm0_);
+    }
+}
+
+
+void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
+{
+    computeRates(stage);
+
+    const scalar rho = law_->rho();
+    vectorField& lm = lm_.primitiveFieldRef();
+    tensorField& F = F_.primitiveFieldRef();
+    vectorField& u = u_.primitiveFieldRef();
+    vectorField& pointU = pointU_.primitiveFieldRef();
+    const vectorField& pointV = pointV_.primitiveField();
+
+    if (stage == 1)
+    {
+        torque1_ = torque_;
+
+        if (preserveAngularMomentum_)
+        {
+            // The stage ends at x* = x^n + dt p^n/rho
+            angularMomentum_.correct
+            (
+                cellPositions(u0_ + (dt/rho)*lm0_),
+                lm0_,
+                dt,
+                L0_ + dt*torque_,
+                lmRate_
+            );
+        }
+        lmRate1_ = lmRate_;
+
+        forAll(lm, celli)
+        {
+            u[celli] = u0_[celli] + (dt/rho)*lm0_[celli];
+            lm[celli] = lm0_[celli] + dt*lmRate_[celli];
+            F[celli] = F0_[celli] + dt*FRate_[celli];
+        }
+        forAll(pointU, pointi)
+        {
+            pointU[pointi] = pointU0_[pointi] + dt*pointV[pointi];
+        }
+    }
+    else
+    {
+        if (preserveAngularMomentum_)
+        {
+            // The step ends at x^{n+1} = x^n + dt (p^n + p*)/(2 rho) with
+            // p^{n+1} = p^n + dt r1/2 + dt r2/2
+            angularMomentum_.correct
+            (
+                cellPositions(u0_ + (0.5*dt/rho)*(lm0_ + lm)),
+                lm0_ + 0.5*dt*lmRate1_,
+                0.5*dt,
+                L0_ + 0.5*dt*(torque1_ + torque_),
+                lmRate_
+            );
+        }
+
+        // u first: it advances with the stage momentum p*
+        forAll(lm, celli)
+        {
+            u[celli] = 0.5*(u0_[celli] + u[celli] + (dt/rho)*lm[celli]);
+            lm[celli] = 0.5*(lm0_[celli] + lm[celli] + dt*lmRate_[celli]);
+            F[celli] = 0.5*(F0_[celli] + F[celli] + dt*FRate_[celli]);
+        }
+        forAll(pointU, pointi)
+        {
+            pointU[pointi] =
+                0.5*(pointU0_[pointi] + pointU[pointi] + dt*pointV[pointi]);
+        }
+    }
+}
+
+
+bool Foam::touchSolid::valid() const
+{
+    bool ok = true;
+
+    forAll(F_, celli)
+    {
+        const scalar J = det(F_[celli]);
+        const scalar magLm = mag(lm_[celli]);
+
+        if (!(J > 0) || !std::isfinite(J) || !std::isfinite(magLm))
+        {
+            ok = false;
+            break;
+        }
+    }
+
+    return returnReduce(ok, andOp<bool>());
+}
+
+
+void Foam::touchSolid::restoreOldTime()
+{
+    lm_.primitiveFieldRef() = lm0_;
+    F_.primitiveFieldRef() = F0_;
+    u_.primitiveFieldRef() = u0_;
+    pointU_.primitiveFieldRef() = pointU0_;
+}
+
+
+Foam::vector Foam::touchSolid::totalLinearMomentum() const
+{
+    return gSum(mesh_.V()*lm_.primitiveField());
+}
+
+
+Foam::vector Foam::touchSolid::totalAngularMomentum() const
+{
+    return angularMomentum_.total
+    (
+        cellPositions(u_.primitiveField()),
+        lm_.primitiveField()
+    );
+}
+
+
+Foam::scalar Foam::touchSolid::kineticEnergy() const
+{
+    return gSum(mesh_.V()*magSqr(lm_.primitiveField()))/(2*law_->rho());
+}
+
+
+Foam::scalar Foam::touchSolid::strainEnergy() const
+{
+    return law_->totalStrainEnergy(F_);
+}
+
+
+void Foam::touchSolid::writeOutputFields() const
+{
+    const word& timeName = mesh_.time().timeName();
+    const scalar rho = law_->rho();
+
+    auto outputIO = [&](const word& name)
+    {
+        return IOobject
+        (
+            name,
+            timeName,
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        );
+    };
+
+    // Stress of the final state (P_ holds the last stage's)
+    volTensorField P(outputIO("P"), P_);
+    forAll(P, celli)
+    {
+        P[celli] = law_->P(F_[celli]);
+    }
+    P.write();
+
+    volVectorField v(outputIO("v"), lm_/rho);
+    v.write();
+
+    volScalarField J(outputIO("J"), det(F_));
+    J.write();
+
+    volSymmTensorField sigma(outputIO("sigma"), symm(P & F_.T())/J);
+    sigma.write();
+
+    volScalarField pressure(outputIO("pressure"), -tr(sigma)/3);
+    pressure.write();
+}
+
+
+// ************************************************************************* //
