@@ -70,10 +70,20 @@ int main(int argc, char *argv[])
         Info<< "Time = " << runTime.timeName() << "  deltaT = " << dt << nl;
 
         solid.storeOldTime();
-        solid.advanceStage(1, dt);
-        solid.advanceStage(2, dt);
 
-        if (!solid.valid())
+        // Each stage must leave a valid state: the next one evaluates the
+        // stress of every cell, which needs det F > 0
+        bool valid = true;
+        for (const label stage : {1, 2})
+        {
+            solid.advanceStage(stage, dt);
+            if (!(valid = solid.valid()))
+            {
+                break;
+            }
+        }
+
+        if (!valid)
         {
             solid.restoreOldTime();
             runTime.setTime(runTime.value() - dt, runTime.timeIndex() - 1);

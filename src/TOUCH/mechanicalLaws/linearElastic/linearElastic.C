@@ -22,9 +22,13 @@ namespace mechanicalLaws
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::mechanicalLaws::linearElastic::linearElastic(const fvMesh& mesh)
+Foam::mechanicalLaws::linearElastic::linearElastic
+(
+    const fvMesh& mesh,
+    const dictionary& dict
+)
 :
-    mechanicalLaw(mesh)
+    mechanicalLaw(mesh, dict)
 {}
 
 

@@ -43,7 +43,11 @@ Foam::scalar Foam::mechanicalLaw::readBounded
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::mechanicalLaw::mechanicalLaw(const fvMesh& mesh)
+Foam::mechanicalLaw::mechanicalLaw
+(
+    const fvMesh& mesh,
+    const dictionary& dict
+)
 :
     IOdictionary
     (
@@ -52,9 +56,10 @@ Foam::mechanicalLaw::mechanicalLaw(const fvMesh& mesh)
             "mechanicalProperties",
             mesh.time().constant(),
             mesh,
-            IOobject::MUST_READ,
+            IOobject::NO_READ,
             IOobject::NO_WRITE
-        )
+        ),
+        dict
     ),
     mesh_(mesh),
     rho_(readBounded("rho", 0, GREAT)),

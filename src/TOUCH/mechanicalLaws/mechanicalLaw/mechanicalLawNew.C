@@ -29,6 +29,16 @@ Foam::autoPtr<Foam::mechanicalLaw> Foam::mechanicalLaw::New
         )
     );
 
+    return New(mesh, dict);
+}
+
+
+Foam::autoPtr<Foam::mechanicalLaw> Foam::mechanicalLaw::New
+(
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+{
     const word modelType(dict.get<word>("model"));
 
     Info<< "Selecting mechanical law " << modelType << endl;
@@ -46,7 +56,7 @@ Foam::autoPtr<Foam::mechanicalLaw> Foam::mechanicalLaw::New
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<mechanicalLaw>(cstrIter()(mesh));
+    return autoPtr<mechanicalLaw>(cstrIter()(mesh, dict));
 }
 
 

@@ -22,9 +22,13 @@ namespace mechanicalLaws
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::mechanicalLaws::neoHookean::neoHookean(const fvMesh& mesh)
+Foam::mechanicalLaws::neoHookean::neoHookean
+(
+    const fvMesh& mesh,
+    const dictionary& dict
+)
 :
-    mechanicalLaw(mesh)
+    mechanicalLaw(mesh, dict)
 {}
 
 

@@ -1,0 +1,235 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+
+Application
+    Test-riemannSolver
+
+Description
+    Checks the acoustic Riemann solver and the boundary conditions:
+    - consistency: equal left and right states give the physical flux
+      (t^C = t, p^C = p);
+    - conservation: the flux seen from the right cell (normal reversed,
+      tractions of the reversed normal) is the same contact momentum and the
+      opposite traction;
+    - upwinding: a pure normal (tangential) momentum jump gives the traction
+      Up/2 (Us/2) times the jump;
+    - every boundary condition of the test case imposes what it claims
+      (zero normal velocity and shear traction on symmetric planes, ...),
+      and returns the interior state when that state already satisfies it.
+    Exits non-zero on any wrong answer.
+
+Usage
+    Test-riemannSolver -case applications/test/case
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "mechanicalLaw.H"
+#include "riemannSolver.H"
+#include "solidFluxFvPatchVectorField.H"
+#include "Random.H"
+#include "testReport.H"
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    testReport report;
+    Random rnd(7);
+
+    autoPtr<mechanicalLaw> law(mechanicalLaw::New(mesh));
+    const dictionary& controls = mesh.solutionDict().subDict("TOUCH");
+    autoPtr<riemannSolver> riemann(riemannSolver::New(controls, *law));
+
+    const scalar Up = law->Up();
+    const scalar Us = law->Us();
+    const scalar rho = law->rho();
+    const scalar pScale = rho*Up;   // momentum of a 1 m/s velocity, ...
+    const scalar tScale = law->E(); // ... and a unit strain
+
+    auto randomVector = [&](const scalar scale)
+    {
+        return scale*(rnd.sample01<vector>() - 0.5*vector::one);
+    };
+    auto unitVector = [&]()
+    {
+        const vector v(randomVector(1));
+        return v/mag(v);
+    };
+
+    for (label sample = 0; sample < 5; ++sample)
+    {
+        const vector n(unitVector());
+        const vector pL(randomVector(pScale)), tL(randomVector(tScale));
+        const vector pR(randomVector(pScale)), tR(randomVector(tScale));
+        vector pC, tC;
+
+        riemann->flux(pL, tL, pL, tL, n, pC, tC);
+        report.check
+        (
+            "consistency: equal states give t^C = t, p^C = p",
+            mag(tC - tL)/tScale + mag(pC - pL)/pScale,
+            1e-14
+        );
+
+        vector pC2, tC2;
+        riemann->flux(pL, tL, pR, tR, n, pC, tC);
+        riemann->flux(pR, -tR, pL, -tL, -n, pC2, tC2);
+        report.check
+        (
+            "conservation: the right cell sees -t^C and the same p^C",
+            mag(tC + tC2)/tScale + mag(pC - pC2)/pScale,
+            1e-14
+        );
+
+        // Normal and tangential momentum jumps with equal tractions
+        const vector tangent(unitVector() ^ n);
+        riemann->flux(pL, tL, pL + pScale*n, tL, n, pC, tC);
+        report.check
+        (
+            "upwinding: normal jump gives Up/2 [[p]]",
+            mag(tC - tL - 0.5*Up*pScale*n)/tScale,
+            1e-14
+        );
+        riemann->flux
+        (
+            pL, tL, pL + pScale*tangent/mag(tangent), tL, n, pC, tC
+        );
+        report.check
+        (
+            "upwinding: tangential jump gives Us/2 [[p]]",
+            mag(tC - tL - 0.5*Us*pScale*tangent/mag(tangent))/tScale,
+            1e-14
+        );
+    }
+
+    // Boundary conditions of the test case, fed random interior states
+    volVectorField lm
+    (
+        IOobject("lm", runTime.timeName(), mesh, IOobject::MUST_READ),
+        mesh
+    );
+
+    forAll(lm.boundaryField(), patchi)
+    {
+        const auto& bc =
+            refCast<const solidFluxFvPatchVectorField>
+            (
+                lm.boundaryField()[patchi]
+            );
+        const label size = bc.size();
+        const word type(bc.type());
+        const word patch(bc.patch().name());
+
+        vectorField pM(size), tM(size), nM(size), xM(bc.patch().Cf());
+        forAll(pM, i)
+        {
+            pM[i] = randomVector(pScale);
+            tM[i] = randomVector(tScale);
+            nM[i] = unitVector();
+        }
+
+        const solidFluxFvPatchVectorField::interiorState interior
+        {
+            pM, tM, nM, xM, rho, Up, Us, 1
+        };
+        vectorField pC(size), tC(size);
+        bc.flux(interior, pC, tC);
+
+        scalar err = 0;
+
+        forAll(pC, i)
+        {
+            const vector& n = nM[i];
+            const tensor nn(sqr(n));
+            const tensor T(tensor::I - nn);
+
+            if (type == "symmetricPlane")
+            {
+                err = max(err, mag(n & pC[i])/pScale + mag(T & tC[i])/tScale);
+            }
+            else if (type == "skewSymmetricPlane")
+            {
+                err = max(err, mag(T & pC[i])/pScale + mag(n & tC[i])/tScale);
+            }
+            else if (type == "clamped")
+            {
+                err = max(err, mag(pC[i])/pScale);
+            }
+            else if (type == "traction")
+            {
+                // The test case: traction (1e5 0 0) and pressure 5e4 on Z0,
+                // free on Z1
+                const vector tStar
+                (
+                    patch == "Z0"
+                  ? vector(1e5, 0, 0) - 5e4*n
+                  : vector::zero
+                );
+                err = max(err, mag(tC[i] - tStar)/tScale);
+            }
+            else if (type == "prescribedVelocity")
+            {
+                err = max(err, mag(pC[i] - rho*vector(1, 2, 3))/pScale);
+            }
+        }
+
+        report.check(patch + " (" + type + ") imposes its condition", err, 1e-14);
+
+        // An interior state that satisfies the condition is left unchanged
+        forAll(pM, i)
+        {
+            const vector& n = nM[i];
+            const tensor nn(sqr(n));
+            const tensor T(tensor::I - nn);
+
+            if (type == "symmetricPlane")
+            {
+                pM[i] = T & pM[i];
+                tM[i] = nn & tM[i];
+            }
+            else if (type == "skewSymmetricPlane")
+            {
+                pM[i] = nn & pM[i];
+                tM[i] = T & tM[i];
+            }
+            else if (type == "clamped")
+            {
+                pM[i] = Zero;
+            }
+            else if (type == "traction")
+            {
+                tM[i] =
+                    patch == "Z0" ? vector(1e5, 0, 0) - 5e4*n : vector::zero;
+            }
+            else if (type == "prescribedVelocity")
+            {
+                pM[i] = rho*vector(1, 2, 3);
+            }
+        }
+        bc.flux(interior, pC, tC);
+        report.check
+        (
+            patch + " (" + type + ") keeps a state that satisfies it",
+            max(mag(pC - pM))/pScale + max(mag(tC - tM))/tScale,
+            1e-14
+        );
+    }
+
+    // Exit here: the status must not be lost in argList's destructor
+    Pstream::exit(report.result("Test-riemannSolver"));
+
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,118 @@
+"""Set-up of the touchFoam tutorials: initial fields and run copies.
+
+The tutorials' initialise.py scripts call the initialise_* functions; the
+tests and validation scripts call prepare() to make a copy of a tutorial
+with other settings, meshed and initialised exactly as its Allrun does.
+"""
+
+import os
+
+import numpy as np
+
+from . import analytic
+from .foamfile import FoamField, read_dict
+from .mesh import PolyMesh
+from .run import (PYTHON, copy_case, foam_set, restore0, run, tutorial_dir,
+                  write_options)
+
+IDENTITY = np.eye(3).ravel()
+
+
+def material(case):
+    """mechanicalProperties of a case (optional overrides included)."""
+    d = read_dict(os.path.join(case, "constant", "mechanicalProperties"))
+    for key in ("rho", "E", "nu"):
+        if not isinstance(d.get(key), float):
+            raise ValueError("mechanicalProperties: %s missing or not a "
+                             "number" % key)
+    return d
+
+
+def _write_lm_F(case, lm=None, F=None):
+    """Write 0/lm and 0/F internal fields (None: leave the file alone)."""
+    if lm is not None:
+        fld = FoamField(os.path.join(case, "0", "lm"))
+        fld.set_internal(lm)
+        fld.write()
+    if F is not None:
+        fld = FoamField(os.path.join(case, "0", "F"))
+        fld.set_internal(F.reshape(len(F), 9))
+        fld.write()
+
+
+def initialise_swinging_cube(case, U0=None):
+    """0/F = I + grad u(X_e, 0) at the cell centres; lm stays zero.
+
+    The initial velocity of the swinging cube is exactly zero.
+    """
+    mat = material(case)
+    kw = {} if U0 is None else {"U0": U0}
+    sol = analytic.SwingingCube(E=mat["E"], nu=mat["nu"], rho=mat["rho"], **kw)
+    X = PolyMesh(case).cell_centres
+    _write_lm_F(case, lm=mat["rho"] * sol.velocity(X, 0.0),
+                F=sol.deformation_gradient(X, 0.0))
+    return len(X)
+
+
+def initialise_twisting_column(case, Omega=105.0, L=6.0):
+    """lm = rho0 (omega x X) at the cell centres; F = I (from 0.orig)."""
+    mat = material(case)
+    X = PolyMesh(case).cell_centres
+    v = analytic.TwistingColumn(Omega=Omega, L=L).velocity(X)
+    _write_lm_F(case, lm=mat["rho"] * v)
+    return len(X)
+
+
+def initialise_rigid_motion(case, translation, omega):
+    """lm = rho0 (v_t + omega x X) at the cell centres; F = I."""
+    mat = material(case)
+    X = PolyMesh(case).cell_centres
+    _write_lm_F(case, lm=mat["rho"] * analytic.rigid_velocity(
+        X, translation, omega))
+    return len(X)
+
+
+# -- run copies -------------------------------------------------------------
+
+def mesh_case(case, tutorial, n=None):
+    """Make the mesh of a copy the way the tutorial's Allrun does."""
+    if tutorial == "unstructuredCube":
+        args = [PYTHON, "makeMesh.py"] + ([] if n is None else ["-n", str(n)])
+        run(args, case, "makeMesh")
+        run(["gmshToFoam", "cube.msh"], case)
+        run(["checkMesh"], case)
+    else:
+        write_options(case, "system/meshOptions",
+                      {} if n is None else {"N": n})
+        run(["blockMesh"], case)
+
+
+def prepare(tutorial, dst, n=None, nu=None, touch=None, control=None,
+            initialise=True):
+    """A meshed and initialised copy of tutorials/<tutorial> at dst.
+
+    n        cells per side (swingingCube, spinningCube, unstructuredCube)
+             or across the column (twistingColumn: n x 6n x n)
+    nu       Poisson's ratio override (constant/materialOptions)
+    touch    {entry: value} for fvSolution's TOUCH dictionary
+    control  {entry: value} for system/controlDict ('functions/solidMonitor/
+             writePrecision' style paths allowed)
+    """
+    copy_case(tutorial_dir(tutorial), dst)
+    if nu is not None:
+        write_options(dst, "constant/materialOptions", {"nu": nu})
+    for key, value in (touch or {}).items():
+        foam_set(dst, "system/fvSolution", "TOUCH/" + key, value)
+    for key, value in (control or {}).items():
+        foam_set(dst, "system/controlDict", key, value)
+    restore0(dst)
+    mesh_case(dst, tutorial, n)
+    if initialise:
+        run([PYTHON, "initialise.py"], dst, "initialise")
+    return dst
+
+
+def precise_output(digits=17):
+    """controlDict entries for output that round-trips doubles exactly."""
+    return {"writePrecision": digits,
+            "functions/solidMonitor/writePrecision": digits}
