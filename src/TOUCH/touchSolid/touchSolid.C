@@ -347,7 +347,8 @@ void Foam::touchSolid::computeRates(const label stage)
             faceVelocity_[patch.start() + i] = pC[i]/rho;
         }
 
-        // The contact momentum is the boundary value points interpolate
+        // The contact momentum is the boundary value that point
+        // interpolation and output use
         lm_.boundaryFieldRef()[patchi] == pC;
     }
 
