@@ -7,26 +7,13 @@ F = I comes from 0.orig.  Run after blockMesh and restore0Dir.
 """
 
 import os
-import sys
 
 OMEGA = 105.0   # angular velocity amplitude [rad/s]
 LENGTH = 6.0    # column length [m]
 
 
-def _package_dir():
-    """bin/python of the repository holding this script (or of
-    $TOUCH_PROJECT_DIR), so that copies of the case work too."""
-    d = os.path.dirname(os.path.abspath(__file__))
-    while d != os.path.dirname(d):
-        if os.path.isdir(os.path.join(d, "bin", "python", "touchfoam")):
-            return os.path.join(d, "bin", "python")
-        d = os.path.dirname(d)
-    return os.path.join(os.environ.get("TOUCH_PROJECT_DIR", "."), "bin",
-                        "python")
-
-
-sys.path.insert(0, _package_dir())
-from touchfoam.cases import initialise_twisting_column  # noqa: E402
+# The touchfoam package: bin/python, on PYTHONPATH after etc/bashrc
+from touchfoam.cases import initialise_twisting_column
 
 if __name__ == "__main__":
     case = os.path.dirname(os.path.abspath(__file__))
