@@ -127,6 +127,7 @@ def check_case(root, tutorial, n, cut_patch, steps):
     decomps = DECOMPOSITIONS + (
         COLUMN_EXTRA if tutorial == "twistingColumn" else [])
     worst, worst_plain, max_split = 0.0, 0.0, 0
+    worst_plain_field = ""
     for label, decomp in decomps:
         case = cases.prepare(tutorial, os.path.join(root, tutorial, label),
                              n=n, control=control(steps))
@@ -144,12 +145,15 @@ def check_case(root, tutorial, n, cut_patch, steps):
                 tutorial, label, ", ".join("%s %.2e" % fd
                                            for fd in sorted(bad.items()))))
         worst = max([worst] + [d for d, _ in diffs.values()])
-        worst_plain = max([worst_plain] + [d for _, d in diffs.values()])
+        for field, (_, d) in diffs.items():
+            if d > worst_plain:
+                worst_plain, worst_plain_field = d, "%s %s" % (field, label)
     if max_split < 2:
         raise AssertionError("%s: no decomposition splits patch %s"
                              % (tutorial, cut_patch))
-    return ("%s %d cells %d steps: max diff %.1e (plain %.1e), %s on up to "
-            "%d procs" % (tutorial, m.n_cells, nsteps, worst, worst_plain,
+    return ("%s %d cells %d steps: max diff %.1e (plain %.1e in %s), %s on "
+            "up to %d procs" % (tutorial, m.n_cells, nsteps, worst,
+                                worst_plain, worst_plain_field,
                           cut_patch, max_split))
 
 
