@@ -3,7 +3,7 @@
 
     /usr/bin/python3 test/cases/parallelEqualsSerial.py [--steps 50]
 
-For swingingCube (8^3), twistingColumn (4 x 24 x 4) and unstructuredCube
+For swingingCube (8^3), twistingColumn (4 x 24 x 4), spinningCube (6^3) and unstructuredCube
 (6 x 4^3 tets): run a fixed number of steps (controlDict 'maxSteps';
 writeControl timeStep) in serial, then decomposed with metis on 2 and 4
 ranks (4 > cores: --oversubscribe) and scotch on 2, plus 'simple' (2 1 2)
@@ -45,7 +45,7 @@ TOL = 1e-12
 FIELDS = ["lm", "v", "F", "P", "sigma", "pressure", "J", "u", "pointU"]
 # (tutorial, n, patch that some decomposition must split)
 CASES = [("swingingCube", 8, "X0"), ("twistingColumn", 4, "base"),
-         ("unstructuredCube", 4, "X0")]
+         ("unstructuredCube", 4, "X0"), ("spinningCube", 6, "surface")]
 DECOMPOSITIONS = [
     ("metis2", {"method": "metis", "numberOfSubdomains": 2}),
     ("metis4", {"method": "metis", "numberOfSubdomains": 4}),
