@@ -57,6 +57,19 @@ static inline scalar minEigenValue(const symmTensor& A)
     return q + 2*p*Foam::cos(phi + constant::mathematical::twoPi/3);
 }
 
+
+//- IOobject of a field of the solid at the present time
+static IOobject fieldIO
+(
+    const fvMesh& mesh,
+    const word& name,
+    const IOobject::readOption read,
+    const IOobject::writeOption write
+)
+{
+    return IOobject(name, mesh.time().timeName(), mesh, read, write);
+}
+
 } // End namespace Foam
 
 
@@ -454,82 +467,40 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     hMin_(calcHmin()),
     lm_
     (
-        IOobject
-        (
-            "lm",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::AUTO_WRITE
-        ),
+        fieldIO(mesh, "lm", IOobject::MUST_READ, IOobject::AUTO_WRITE),
         mesh
     ),
     F_
     (
-        IOobject
-        (
-            "F",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::READ_IF_PRESENT,
-            IOobject::AUTO_WRITE
-        ),
+        fieldIO(mesh, "F", IOobject::READ_IF_PRESENT, IOobject::AUTO_WRITE),
         mesh,
         dimensionedTensor("I", dimless, tensor::I),
         calculatedFvPatchTensorField::typeName
     ),
     u_
     (
-        IOobject
-        (
-            "u",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::READ_IF_PRESENT,
-            IOobject::AUTO_WRITE
-        ),
+        fieldIO(mesh, "u", IOobject::READ_IF_PRESENT, IOobject::AUTO_WRITE),
         mesh,
         dimensionedVector("0", dimLength, Zero),
         calculatedFvPatchVectorField::typeName
     ),
     pointU_
     (
-        IOobject
-        (
-            "pointU",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::READ_IF_PRESENT,
-            IOobject::AUTO_WRITE
-        ),
+        fieldIO(mesh, "pointU", IOobject::READ_IF_PRESENT, IOobject::AUTO_WRITE),
         pointMesh::New(mesh),
         dimensionedVector("0", dimLength, Zero),
         calculatedPointPatchVectorField::typeName
     ),
     P_
     (
-        IOobject
-        (
-            "P",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE
-        ),
+        fieldIO(mesh, "P", IOobject::NO_READ, IOobject::NO_WRITE),
         mesh,
         dimensionedTensor("0", dimPressure, Zero),
         calculatedFvPatchTensorField::typeName
     ),
     pointV_
     (
-        IOobject
-        (
-            "pointV",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE
-        ),
+        fieldIO(mesh, "pointV", IOobject::NO_READ, IOobject::NO_WRITE),
         pointMesh::New(mesh),
         dimensionedVector("0", dimVelocity, Zero),
         calculatedPointPatchVectorField::typeName
