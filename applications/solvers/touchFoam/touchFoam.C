@@ -74,7 +74,7 @@ int main(int argc, char *argv[])
         // Each stage must leave a valid state: the next one evaluates the
         // stress of every cell, which needs det F > 0
         bool valid = true;
-        for (const label stage : {1, 2})
+        for (label stage = 1; stage <= solid.nStages(); ++stage)
         {
             solid.advanceStage(stage, dt);
             if (!(valid = solid.valid()))

@@ -22,6 +22,14 @@ namespace Foam
 }
 
 
+const Foam::Enum<Foam::touchSolid::rungeKutta>
+Foam::touchSolid::rungeKuttaNames
+({
+    { rungeKutta::RK2, "RK2" },
+    { rungeKutta::RK3, "RK3" },
+});
+
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace Foam
@@ -464,6 +472,17 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
         controls_.get<Switch>("angularMomentumPreservation")
     ),
     constrainedF_(controls_.getOrDefault<Switch>("constrainedF", false)),
+    rungeKuttaAlpha_
+    (
+        rungeKuttaNames.getOrDefault
+        (
+            "timeScheme",
+            controls_,
+            rungeKutta::RK2
+        ) == rungeKutta::RK2
+      ? scalarList({0, 0.5})
+      : scalarList({0, 0.75, 1.0/3.0})
+    ),
     hMin_(calcHmin()),
     lm_
     (
@@ -510,12 +529,11 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     u0_(mesh.nCells()),
     pointU0_(mesh.nPoints()),
     lmRate_(mesh.nCells()),
-    lmRate1_(mesh.nCells()),
     FRate_(mesh.nCells()),
     faceVelocity_(mesh.nFaces(), Zero),
     torque_(Zero),
-    torque1_(Zero),
-    L0_(Zero)
+    L0_(Zero),
+    Lstage_(Zero)
 {
     if (!(CFL_ > 0 && CFL_ <= 1))
     {
@@ -533,6 +551,7 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
         << "    angular momentum preservation "
         << (preserveAngularMomentum_ ? "on" : "off")
         << ", F update " << (constrainedF_ ? "constrained" : "plain")
+        << ", " << rungeKuttaAlpha_.size() << "-stage SSP Runge-Kutta"
         << nl << endl;
 }
 
@@ -567,6 +586,7 @@ void Foam::touchSolid::storeOldTime()
     if (preserveAngularMomentum_)
     {
         L0_ = angularMomentum_.total(cellPositions(u0_), lm0_);
+        Lstage_ = L0_;
     }
 }
 
@@ -575,70 +595,53 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
 {
     computeRates(stage);
 
+    // Stage k of the SSP Runge-Kutta scheme in Shu-Osher form:
+    //     U <- alpha U^n + (1 - alpha)(U + dt L(U))
+    const scalar alpha = rungeKuttaAlpha_[stage - 1];
+    const scalar beta = 1 - alpha;
     const scalar rho = law_->rho();
+
     vectorField& lm = lm_.primitiveFieldRef();
     tensorField& F = F_.primitiveFieldRef();
     vectorField& u = u_.primitiveFieldRef();
     vectorField& pointU = pointU_.primitiveFieldRef();
     const vectorField& pointV = pointV_.primitiveField();
 
-    if (stage == 1)
+    // u first: it advances with the stage momentum
+    forAll(u, celli)
     {
-        torque1_ = torque_;
-
-        if (preserveAngularMomentum_)
-        {
-            // The stage ends at x* = x^n + dt p^n/rho
-            angularMomentum_.correct
-            (
-                cellPositions(u0_ + (dt/rho)*lm0_),
-                lm0_,
-                dt,
-                L0_ + dt*torque_,
-                lmRate_
-            );
-        }
-        lmRate1_ = lmRate_;
-
-        forAll(lm, celli)
-        {
-            u[celli] = u0_[celli] + (dt/rho)*lm0_[celli];
-            lm[celli] = lm0_[celli] + dt*lmRate_[celli];
-            F[celli] = F0_[celli] + dt*FRate_[celli];
-        }
-        forAll(pointU, pointi)
-        {
-            pointU[pointi] = pointU0_[pointi] + dt*pointV[pointi];
-        }
+        u[celli] =
+            alpha*u0_[celli] + beta*(u[celli] + (dt/rho)*lm[celli]);
     }
-    else
-    {
-        if (preserveAngularMomentum_)
-        {
-            // The step ends at x^{n+1} = x^n + dt (p^n + p*)/(2 rho) with
-            // p^{n+1} = p^n + dt r1/2 + dt r2/2
-            angularMomentum_.correct
-            (
-                cellPositions(u0_ + (0.5*dt/rho)*(lm0_ + lm)),
-                lm0_ + 0.5*dt*lmRate1_,
-                0.5*dt,
-                L0_ + 0.5*dt*(torque1_ + torque_),
-                lmRate_
-            );
-        }
 
-        // u first: it advances with the stage momentum p*
-        forAll(lm, celli)
-        {
-            u[celli] = 0.5*(u0_[celli] + u[celli] + (dt/rho)*lm[celli]);
-            lm[celli] = 0.5*(lm0_[celli] + lm[celli] + dt*lmRate_[celli]);
-            F[celli] = 0.5*(F0_[celli] + F[celli] + dt*FRate_[celli]);
-        }
-        forAll(pointU, pointi)
-        {
-            pointU[pointi] =
-                0.5*(pointU0_[pointi] + pointU[pointi] + dt*pointV[pointi]);
-        }
+    if (preserveAngularMomentum_)
+    {
+        // The stage ends at the positions just computed; its angular
+        // momentum must be the same combination of the step's start and of
+        // the present stage advanced by the boundary torque
+        const vector Lend(alpha*L0_ + beta*(Lstage_ + dt*torque_));
+
+        angularMomentum_.correct
+        (
+            cellPositions(u),
+            alpha*lm0_ + beta*lm,
+            beta*dt,
+            Lend,
+            lmRate_
+        );
+
+        Lstage_ = Lend;
+    }
+
+    forAll(lm, celli)
+    {
+        lm[celli] = alpha*lm0_[celli] + beta*(lm[celli] + dt*lmRate_[celli]);
+        F[celli] = alpha*F0_[celli] + beta*(F[celli] + dt*FRate_[celli]);
+    }
+    forAll(pointU, pointi)
+    {
+        pointU[pointi] =
+            alpha*pointU0_[pointi] + beta*(pointU[pointi] + dt*pointV[pointi]);
     }
 }
 
