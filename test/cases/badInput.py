@@ -1,0 +1,98 @@
+#!/usr/bin/python3
+"""Bad input stops touchFoam with an error naming the file, the entry and
+the valid choices, and writes nothing.
+
+    /usr/bin/python3 test/cases/badInput.py
+
+On a 4^3 swinging cube, one mistake at a time:
+  - a misspelt model in constant/mechanicalProperties,
+  - nu = 0.5,
+  - a misspelt reconstruction scheme and limiter in system/fvSolution TOUCH,
+  - CFL = 1.5,
+  - a boundary condition of lm that is not a solid one (fixedValue),
+  - a missing TOUCH dictionary entry (riemannSolver).
+Each run must exit non-zero, its log must contain every expected word, and
+no time folder may be written.
+Work folders: test/runs/badInput/.
+"""
+
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "bin", "python"))
+
+from touchfoam import cases, run, testing  # noqa: E402
+
+NAME = "badInput"
+
+# (label, file, sed-like (pattern, replacement), words the error must name)
+MISTAKES = [
+    ("model", "constant/mechanicalProperties",
+     (r"model\s+\w+;", "model neoHooke;"),
+     ["neoHooke", "mechanicalProperties", "linearElastic", "neoHookean"]),
+    ("nu", "constant/mechanicalProperties",
+     (r"\nnu\s+[0-9.]+;", "\nnu 0.5;"),
+     ["'nu'", "mechanicalProperties", "< 0.5"]),
+    ("reconstruction", "system/fvSolution",
+     (r"reconstruction\s+\w+;", "reconstruction linar;"),
+     ["linar", "fvSolution", "firstOrder", "limitedLinear"]),
+    ("limiter", "system/fvSolution",
+     (r"limiter\s+\w+;", "limiter minmod;"),
+     ["minmod", "BarthJespersen", "Venkatakrishnan"]),
+    ("CFL", "system/fvSolution",
+     (r"CFL\s+[0-9.]+;", "CFL 1.5;"),
+     ["'CFL'", "fvSolution", "0 < CFL <= 1"]),
+    ("riemannSolver", "system/fvSolution",
+     (r"riemannSolver\s+\w+;", ""),
+     ["riemannSolver", "fvSolution"]),
+    ("boundary", "0/lm",
+     (r"type\s+symmetricPlane;", "type fixedValue;"),
+     ["fixedValue", "lm", "symmetricPlane", "traction"]),
+]
+
+
+def check(root, label, path, edit, words):
+    # limitedLinear, so that the limiter is read
+    case = cases.prepare("swingingCube", os.path.join(root, label), n=4,
+                         touch={"reconstruction": "limitedLinear"})
+    target = os.path.join(case, path)
+    with open(target) as f:
+        text = f.read()
+    new, count = re.subn(edit[0], edit[1], text, count=1)
+    if count != 1:
+        raise AssertionError("%s: could not make the mistake in %s"
+                             % (label, path))
+    with open(target, "w") as f:
+        f.write(new)
+    log = os.path.join(case, "log.touchFoam")
+    with open(log, "w") as f:
+        status = subprocess.call(["touchFoam"], cwd=case, stdout=f,
+                                 stderr=subprocess.STDOUT)
+    with open(log) as f:
+        output = f.read()
+    if status == 0:
+        raise AssertionError("%s: touchFoam accepted the mistake" % label)
+    missing = [w for w in words if w not in output]
+    if missing:
+        raise AssertionError("%s: the error does not name %s (see %s)"
+                             % (label, ", ".join(missing), log))
+    written = [d for d in os.listdir(case)
+               if re.match(r"^[0-9.e+-]+$", d) and d != "0"]
+    if written:
+        raise AssertionError("%s: wrote %s" % (label, written))
+    return label
+
+
+def body():
+    root = testing.work_dir(NAME)
+    checked = [check(root, *m) for m in MISTAKES]
+    return "%d mistakes refused with file, entry and valid choices: %s" % (
+        len(checked), " ".join(checked))
+
+
+if __name__ == "__main__":
+    sys.exit(testing.run_test(NAME, body))
