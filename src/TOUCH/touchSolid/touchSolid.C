@@ -10,7 +10,6 @@ License
 #include "emptyFvPatch.H"
 #include "calculatedFvPatchFields.H"
 #include "calculatedPointPatchFields.H"
-#include "volPointInterpolation.H"
 #include "Switch.H"
 #include "mathematicalConstants.H"
 
@@ -375,9 +374,12 @@ void Foam::touchSolid::computeRates(const label stage)
 
     reduce(torque_, sumOp<vector>());
 
-    // Point velocities from the cell and contact momenta
-    volPointInterpolation::New(mesh_).interpolate(lm_, pointV_);
-    pointV_.primitiveFieldRef() /= rho;
+    // Point velocities: the fit of the cell velocities and of the contact
+    // velocities of the boundary faces
+    {
+        vectorField& pointV = pointV_.primitiveFieldRef();
+        pointFit_.interpolate(lm_.primitiveField()/rho, faceVelocity_, pointV);
+    }
 
     if (constrainedF_)
     {
@@ -466,12 +468,13 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     riemann_(riemannSolver::New(controls_, *law_)),
     reconstruction_(mesh, controls_),
     angularMomentum_(mesh),
+    pointFit_(mesh),
     CFL_(controls_.get<scalar>("CFL")),
     preserveAngularMomentum_
     (
         controls_.get<Switch>("angularMomentumPreservation")
     ),
-    constrainedF_(controls_.getOrDefault<Switch>("constrainedF", false)),
+    constrainedF_(controls_.getOrDefault<Switch>("constrainedF", true)),
     rungeKuttaAlpha_
     (
         rungeKuttaNames.getOrDefault
