@@ -113,6 +113,7 @@ Foam::pointFit::pointFit(const fvMesh& mesh)
 void Foam::pointFit::interpolate
 (
     const vectorField& cellValues,
+    const scalar cellScale,
     const vectorField& faceValues,
     vectorField& pointValues
 ) const
@@ -130,7 +131,7 @@ void Foam::pointFit::interpolate
     {
         for (const label celli : pointCells[pointi])
         {
-            const vector& v = cellValues[celli];
+            const vector v(cellScale*cellValues[celli]);
             sumV_[pointi] += v;
             sumDV_[pointi] += (C[celli] - points[pointi])*v;
         }

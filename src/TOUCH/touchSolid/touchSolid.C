@@ -376,10 +376,13 @@ void Foam::touchSolid::computeRates(const label stage)
 
     // Point velocities: the fit of the cell velocities and of the contact
     // velocities of the boundary faces
-    {
-        vectorField& pointV = pointV_.primitiveFieldRef();
-        pointFit_.interpolate(lm_.primitiveField()/rho, faceVelocity_, pointV);
-    }
+    pointFit_.interpolate
+    (
+        lm_.primitiveField(),
+        1/rho,
+        faceVelocity_,
+        pointV_.primitiveFieldRef()
+    );
 
     if (constrainedF_)
     {
