@@ -1,36 +1,46 @@
 """Render the deformed shape of a touchFoam case, coloured by pressure.
 
-    xvfb-run -a pvbatch renderDeformed.py        (in the case folder)
+    xvfb-run -a pvbatch renderDeformed.py [time ...]        (in the case)
 
-Reads case.foam with ParaView's OpenFOAM reader, warps the point
-displacement pointU onto the mesh and writes deformed_<time>.png for the
-last time written.
+Reads case.foam with ParaView's OpenFOAM reader, warps the mesh by the point
+displacement pointU and writes deformed_<time>.png for each time asked for
+(default: every time written).
 """
 
-from paraview.simple import (  # noqa: F401 (pvbatch provides paraview)
+import sys
+
+from paraview.simple import (  # pvbatch provides paraview
     OpenFOAMReader, WarpByVector, GetActiveViewOrCreate, Show, ColorBy,
-    GetAnimationScene, SaveScreenshot, ResetCamera)
+    GetColorTransferFunction, SaveScreenshot, ResetCamera)
 
 reader = OpenFOAMReader(FileName="case.foam")
 reader.MeshRegions = ["internalMesh"]
-reader.CellArrays = ["pressure", "J"]
-reader.PointArrays = ["pointU"]
+reader.CellArrays = ["pressure"]
 reader.UpdatePipelineInformation()
-times = reader.TimestepValues
-last = times[-1] if times else 0
+times = list(reader.TimestepValues)
+wanted = [float(t) for t in sys.argv[1:]] or times
 
 warp = WarpByVector(Input=reader)
 warp.Vectors = ["POINTS", "pointU"]
 
 view = GetActiveViewOrCreate("RenderView")
-view.ViewSize = [800, 1000]
-view.ViewTime = last
+view.ViewSize = [700, 1000]
+view.OrientationAxesVisibility = 1
 display = Show(warp, view)
 ColorBy(display, ("CELLS", "pressure"))
-display.RescaleTransferFunctionToDataRange(True)
 display.SetScalarBarVisibility(view, True)
-view.CameraPosition = [8, 6, 8]
-view.CameraFocalPoint = [0, 3, 0]
-view.CameraViewUp = [0, 1, 0]
-ResetCamera()
-SaveScreenshot("deformed_%g.png" % last, view)
+
+for wanted_time in wanted:
+    # The written time nearest to the one asked for
+    time = min(times, key=lambda t: abs(t - wanted_time))
+    view.ViewTime = time
+    warp.UpdatePipeline(time)
+    lo, hi = warp.CellData["pressure"].GetRange()
+    bound = max(abs(lo), abs(hi)) or 1
+    GetColorTransferFunction("pressure").RescaleTransferFunction(-bound, bound)
+    view.CameraPosition = [9, 5, 9]
+    view.CameraFocalPoint = [0, 3, 0]
+    view.CameraViewUp = [0, 1, 0]
+    ResetCamera()
+    SaveScreenshot("deformed_%g.png" % time, view)
+    print("wrote deformed_%g.png" % time)
