@@ -8,61 +8,22 @@ License
 #include "clampedFvPatchVectorField.H"
 #include "addToRunTimeSelectionTable.H"
 
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::clampedFvPatchVectorField::clampedFvPatchVectorField
-(
-    const fvPatch& p,
-    const DimensionedField<vector, volMesh>& iF
-)
-:
-    solidFluxFvPatchVectorField(p, iF)
-{}
-
-
-Foam::clampedFvPatchVectorField::clampedFvPatchVectorField
-(
-    const fvPatch& p,
-    const DimensionedField<vector, volMesh>& iF,
-    const dictionary& dict
-)
-:
-    solidFluxFvPatchVectorField(p, iF, dict)
-{}
-
-
-Foam::clampedFvPatchVectorField::clampedFvPatchVectorField
-(
-    const clampedFvPatchVectorField& ptf,
-    const fvPatch& p,
-    const DimensionedField<vector, volMesh>& iF,
-    const fvPatchFieldMapper& mapper
-)
-:
-    solidFluxFvPatchVectorField(ptf, p, iF, mapper)
-{}
-
-
-Foam::clampedFvPatchVectorField::clampedFvPatchVectorField
-(
-    const clampedFvPatchVectorField& ptf,
-    const DimensionedField<vector, volMesh>& iF
-)
-:
-    solidFluxFvPatchVectorField(ptf, iF)
-{}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::clampedFvPatchVectorField::flux
+void Foam::solidFluxConditions::clamped::flux
 (
-    const interiorState& s,
+    const solidFluxFvPatchVectorField::interiorState& s,
     vectorField& pC,
     vectorField& tC
-) const
+)
 {
-    momentumFlux(s, vectorField(pC.size(), Zero), pC, tC);
+    solidFluxFvPatchVectorField::momentumFlux
+    (
+        s,
+        vectorField(pC.size(), Zero),
+        pC,
+        tC
+    );
 }
 
 
@@ -70,7 +31,8 @@ void Foam::clampedFvPatchVectorField::flux
 
 namespace Foam
 {
-    makePatchTypeField(fvPatchVectorField, clampedFvPatchVectorField);
+    defineNamedTemplateTypeNameAndDebug(clampedFvPatchVectorField, 0);
+    addToPatchFieldRunTimeSelection(fvPatchVectorField, clampedFvPatchVectorField);
 }
 
 // ************************************************************************* //

@@ -8,59 +8,14 @@ License
 #include "skewSymmetricPlaneFvPatchVectorField.H"
 #include "addToRunTimeSelectionTable.H"
 
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::skewSymmetricPlaneFvPatchVectorField::skewSymmetricPlaneFvPatchVectorField
-(
-    const fvPatch& p,
-    const DimensionedField<vector, volMesh>& iF
-)
-:
-    solidFluxFvPatchVectorField(p, iF)
-{}
-
-
-Foam::skewSymmetricPlaneFvPatchVectorField::skewSymmetricPlaneFvPatchVectorField
-(
-    const fvPatch& p,
-    const DimensionedField<vector, volMesh>& iF,
-    const dictionary& dict
-)
-:
-    solidFluxFvPatchVectorField(p, iF, dict)
-{}
-
-
-Foam::skewSymmetricPlaneFvPatchVectorField::skewSymmetricPlaneFvPatchVectorField
-(
-    const skewSymmetricPlaneFvPatchVectorField& ptf,
-    const fvPatch& p,
-    const DimensionedField<vector, volMesh>& iF,
-    const fvPatchFieldMapper& mapper
-)
-:
-    solidFluxFvPatchVectorField(ptf, p, iF, mapper)
-{}
-
-
-Foam::skewSymmetricPlaneFvPatchVectorField::skewSymmetricPlaneFvPatchVectorField
-(
-    const skewSymmetricPlaneFvPatchVectorField& ptf,
-    const DimensionedField<vector, volMesh>& iF
-)
-:
-    solidFluxFvPatchVectorField(ptf, iF)
-{}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::skewSymmetricPlaneFvPatchVectorField::flux
+void Foam::solidFluxConditions::skewSymmetricPlane::flux
 (
-    const interiorState& s,
+    const solidFluxFvPatchVectorField::interiorState& s,
     vectorField& pC,
     vectorField& tC
-) const
+)
 {
     forAll(pC, facei)
     {
@@ -77,7 +32,8 @@ void Foam::skewSymmetricPlaneFvPatchVectorField::flux
 
 namespace Foam
 {
-    makePatchTypeField(fvPatchVectorField, skewSymmetricPlaneFvPatchVectorField);
+    defineNamedTemplateTypeNameAndDebug(skewSymmetricPlaneFvPatchVectorField, 0);
+    addToPatchFieldRunTimeSelection(fvPatchVectorField, skewSymmetricPlaneFvPatchVectorField);
 }
 
 // ************************************************************************* //

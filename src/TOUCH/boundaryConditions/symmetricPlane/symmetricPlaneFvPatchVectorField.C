@@ -8,59 +8,14 @@ License
 #include "symmetricPlaneFvPatchVectorField.H"
 #include "addToRunTimeSelectionTable.H"
 
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::symmetricPlaneFvPatchVectorField::symmetricPlaneFvPatchVectorField
-(
-    const fvPatch& p,
-    const DimensionedField<vector, volMesh>& iF
-)
-:
-    solidFluxFvPatchVectorField(p, iF)
-{}
-
-
-Foam::symmetricPlaneFvPatchVectorField::symmetricPlaneFvPatchVectorField
-(
-    const fvPatch& p,
-    const DimensionedField<vector, volMesh>& iF,
-    const dictionary& dict
-)
-:
-    solidFluxFvPatchVectorField(p, iF, dict)
-{}
-
-
-Foam::symmetricPlaneFvPatchVectorField::symmetricPlaneFvPatchVectorField
-(
-    const symmetricPlaneFvPatchVectorField& ptf,
-    const fvPatch& p,
-    const DimensionedField<vector, volMesh>& iF,
-    const fvPatchFieldMapper& mapper
-)
-:
-    solidFluxFvPatchVectorField(ptf, p, iF, mapper)
-{}
-
-
-Foam::symmetricPlaneFvPatchVectorField::symmetricPlaneFvPatchVectorField
-(
-    const symmetricPlaneFvPatchVectorField& ptf,
-    const DimensionedField<vector, volMesh>& iF
-)
-:
-    solidFluxFvPatchVectorField(ptf, iF)
-{}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::symmetricPlaneFvPatchVectorField::flux
+void Foam::solidFluxConditions::symmetricPlane::flux
 (
-    const interiorState& s,
+    const solidFluxFvPatchVectorField::interiorState& s,
     vectorField& pC,
     vectorField& tC
-) const
+)
 {
     forAll(pC, facei)
     {
@@ -77,7 +32,8 @@ void Foam::symmetricPlaneFvPatchVectorField::flux
 
 namespace Foam
 {
-    makePatchTypeField(fvPatchVectorField, symmetricPlaneFvPatchVectorField);
+    defineNamedTemplateTypeNameAndDebug(symmetricPlaneFvPatchVectorField, 0);
+    addToPatchFieldRunTimeSelection(fvPatchVectorField, symmetricPlaneFvPatchVectorField);
 }
 
 // ************************************************************************* //
