@@ -367,8 +367,7 @@ void Foam::touchSolid::computeRates(const label stage)
             faceVelocity_[patch.start() + i] = pC[i]/rho;
         }
 
-        // The contact momentum is the boundary value that point
-        // interpolation and output use
+        // The contact momentum is the boundary value written
         lm_.boundaryFieldRef()[patchi] == pC;
     }
 
