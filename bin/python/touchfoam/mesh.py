@@ -148,35 +148,20 @@ class PolyMesh:
 
     # -- geometry ---------------------------------------------------------
 
-    def _compute(self):
-        fc, fa = face_centres_and_areas(self.points, self.faces)
-        cc, cv = cell_centres_and_volumes(
-            fc, fa, self.owner, self.neighbour, self.n_cells)
-        self._geometry = (fc, fa, cc, cv)
-
-    @property
-    def face_centres(self):
+    def _geometry_item(self, i):
+        """Face centres, face areas, cell centres, cell volumes (0..3),
+        computed together on first use."""
         if self._geometry is None:
-            self._compute()
-        return self._geometry[0]
+            fc, fa = face_centres_and_areas(self.points, self.faces)
+            cc, cv = cell_centres_and_volumes(
+                fc, fa, self.owner, self.neighbour, self.n_cells)
+            self._geometry = (fc, fa, cc, cv)
+        return self._geometry[i]
 
-    @property
-    def face_areas(self):
-        if self._geometry is None:
-            self._compute()
-        return self._geometry[1]
-
-    @property
-    def cell_centres(self):
-        if self._geometry is None:
-            self._compute()
-        return self._geometry[2]
-
-    @property
-    def cell_volumes(self):
-        if self._geometry is None:
-            self._compute()
-        return self._geometry[3]
+    face_centres = property(lambda self: self._geometry_item(0))
+    face_areas = property(lambda self: self._geometry_item(1))
+    cell_centres = property(lambda self: self._geometry_item(2))
+    cell_volumes = property(lambda self: self._geometry_item(3))
 
 
 def face_centres_and_areas(points, faces):
