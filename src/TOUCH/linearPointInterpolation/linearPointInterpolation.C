@@ -1,0 +1,198 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+\*---------------------------------------------------------------------------*/
+
+#include "linearPointInterpolation.H"
+#include "syncTools.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::linearPointInterpolation::linearPointInterpolation
+(
+    const fvMesh& mesh,
+    const linearReconstruction& reconstruction
+)
+:
+    mesh_(mesh),
+    reconstruction_(reconstruction),
+    nPointCells_(mesh.nPoints(), Zero),
+    cellWork_(mesh.nCells()),
+    boundaryFaceWork_(mesh.nBoundaryFaces())
+{
+    const labelListList& pointCells = mesh_.pointCells();
+
+    forAll(pointCells, pointi)
+    {
+        nPointCells_[pointi] = pointCells[pointi].size();
+    }
+
+    syncTools::syncPointList
+    (
+        mesh_, nPointCells_, plusEqOp<scalar>(), scalar(0)
+    );
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::linearPointInterpolation::interpolate
+(
+    const volVectorField& U,
+    const scalar scale,
+    vectorField& pointValues
+) const
+{
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& Ui = U.primitiveField();
+    const vectorField& ownerWeights = reconstruction_.ownerWeights();
+    const vectorField& neighbourWeights = reconstruction_.neighbourWeights();
+
+    // Unlimited least-squares gradients: a fixed linear map, so that the
+    // transpose below is exact
+    tensorField& grad = cellWork_;
+    grad = Zero;
+
+    forAll(own, facei)
+    {
+        const vector dU(Ui[nei[facei]] - Ui[own[facei]]);
+        grad[own[facei]] += ownerWeights[facei]*dU;
+        grad[nei[facei]] += neighbourWeights[facei]*dU;
+    }
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (!mesh_.boundary()[patchi].coupled())
+        {
+            continue;
+        }
+
+        const vectorField Un(U.boundaryField()[patchi].patchNeighbourField());
+        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+        const vectorField& w = reconstruction_.coupledWeights(patchi);
+
+        forAll(faceCells, i)
+        {
+            grad[faceCells[i]] += w[i]*(Un[i] - Ui[faceCells[i]]);
+        }
+    }
+
+    const pointField& points = mesh_.points();
+    const vectorField& X = reconstruction_.X().primitiveField();
+    const labelListList& pointCells = mesh_.pointCells();
+
+    forAll(pointCells, pointi)
+    {
+        vector sum(Zero);
+        for (const label celli : pointCells[pointi])
+        {
+            sum += Ui[celli] + ((points[pointi] - X[celli]) & grad[celli]);
+        }
+        pointValues[pointi] = sum;
+    }
+
+    syncTools::syncPointList
+    (
+        mesh_, pointValues, plusEqOp<vector>(), vector::zero
+    );
+
+    forAll(pointValues, pointi)
+    {
+        pointValues[pointi] *= scale/nPointCells_[pointi];
+    }
+}
+
+
+void Foam::linearPointInterpolation::addTranspose
+(
+    const vectorField& pointValues,
+    vectorField& cellValues
+) const
+{
+    const pointField& points = mesh_.points();
+    const vectorField& X = reconstruction_.X().primitiveField();
+    const labelListList& cellPoints = mesh_.cellPoints();
+
+    // The mean and the extrapolation: each cell collects its points' shares
+    // f_a/n_a, and the dual H_e = sum_a f_a/n_a (x) (X_a - X_e) of its
+    // gradient
+    tensorField& dual = cellWork_;
+
+    forAll(cellPoints, celli)
+    {
+        vector sum(Zero);
+        tensor H(Zero);
+        for (const label pointi : cellPoints[celli])
+        {
+            const vector share(pointValues[pointi]/nPointCells_[pointi]);
+            sum += share;
+            H += share*(points[pointi] - X[celli]);
+        }
+        cellValues[celli] += sum;
+        dual[celli] = H;
+    }
+
+    // The gradients: grad_e gains w (x) (U_other - U_e) at every face, so
+    // the transpose moves H_e w from e to the other cell
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& ownerWeights = reconstruction_.ownerWeights();
+    const vectorField& neighbourWeights = reconstruction_.neighbourWeights();
+
+    forAll(own, facei)
+    {
+        const label o = own[facei];
+        const label n = nei[facei];
+        const vector q
+        (
+            (dual[o] & ownerWeights[facei]) + (dual[n] & neighbourWeights[facei])
+        );
+        cellValues[n] += q;
+        cellValues[o] -= q;
+    }
+
+    // Processor faces: this side's share leaves the cell here, and the
+    // neighbour's share arrives from the other rank
+    const label nInternal = mesh_.nInternalFaces();
+    boundaryFaceWork_ = Zero;
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh_.boundary()[patchi];
+
+        if (patch.coupled())
+        {
+            const vectorField& w = reconstruction_.coupledWeights(patchi);
+
+            forAll(patch, i)
+            {
+                const label celli = patch.faceCells()[i];
+                const vector q(dual[celli] & w[i]);
+                cellValues[celli] -= q;
+                boundaryFaceWork_[patch.start() + i - nInternal] = q;
+            }
+        }
+    }
+
+    syncTools::swapBoundaryFaceList(mesh_, boundaryFaceWork_);
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh_.boundary()[patchi];
+
+        if (patch.coupled())
+        {
+            forAll(patch, i)
+            {
+                cellValues[patch.faceCells()[i]] +=
+                    boundaryFaceWork_[patch.start() + i - nInternal];
+            }
+        }
+    }
+}
+
+
+// ************************************************************************* //
