@@ -99,6 +99,24 @@ struct prescribeEqOp
 };
 
 
+//- The share in [0, 1] of a cell jump that the reconstructed jump keeps
+//  along it: upwinding phi (cell jump) damps like the reconstructed jump in
+//  smooth regions (phi = O(h)) yet can never feed energy, which the
+//  reconstructed jump itself does where it opposes the cell jump (least-
+//  squares gradients on tetrahedra)
+static inline scalar jumpShare(const vector& reconstructed, const vector& cell)
+{
+    const scalar cellSqr = magSqr(cell);
+
+    if (cellSqr < VSMALL)
+    {
+        return 0;
+    }
+
+    return min(max((reconstructed & cell)/cellSqr, scalar(0)), scalar(1));
+}
+
+
 //- IOobject of a field of the solid at the present time
 static IOobject fieldIO
 (
@@ -271,18 +289,31 @@ void Foam::touchSolid::computeRates(const label stage)
 
         const vector pL(linearReconstruction::p(lm[o], gp[o], rL));
         const vector pR(linearReconstruction::p(lmN, gpN, rR));
-        const vector tL(linearReconstruction::P(P[o], gx[o], gy[o], gz[o], rL) & N);
-        const vector tR(linearReconstruction::P(PN, gxN, gyN, gzN, rR) & N);
         const vector n(spatialNormal(0.5*(F[o] + FN), N));
-
         vector pC;
-        riemann_->flux(pL, tL, pR, tR, n, pC, tC);
 
         if (FUpdate_ == deformationUpdate::compatible)
         {
             // The central traction is the point coupling's; the upwind
-            // part damps velocity jumps
-            tC -= 0.5*(tL + tR);
+            // part damps the share of the cell jump the reconstruction
+            // keeps: the flux of the jump alone
+            const vector jump(lmN - lm[o]);
+            riemann_->flux
+            (
+                Zero, Zero, jumpShare(pR - pL, jump)*jump, Zero, n, pC, tC
+            );
+        }
+        else
+        {
+            const vector tL
+            (
+                linearReconstruction::P(P[o], gx[o], gy[o], gz[o], rL) & N
+            );
+            const vector tR
+            (
+                linearReconstruction::P(PN, gxN, gyN, gzN, rR) & N
+            );
+            riemann_->flux(pL, tL, pR, tR, n, pC, tC);
         }
 
         tC *= magSf;
@@ -394,6 +425,17 @@ void Foam::touchSolid::computeRates(const label stage)
             xM[i] = X[o] + u_[o] + (F[o] & r);
         }
 
+        const solidFluxFvPatchVectorField& condition =
+            refCast<const solidFluxFvPatchVectorField>
+            (
+                lm_.boundaryField()[patchi]
+            );
+
+        if (FUpdate_ == deformationUpdate::compatible)
+        {
+            pointConstraints(patch, condition, pM, tM, xM, stage);
+        }
+
         const solidFluxFvPatchVectorField::interiorState interior
         {
             pM, tM, nM, xM, rho, law_->Up(), law_->Us(), stage
@@ -401,73 +443,23 @@ void Foam::touchSolid::computeRates(const label stage)
 
         vectorField pC(patch.size());
         vectorField tC(patch.size());
-
-        const solidFluxFvPatchVectorField& condition =
-            refCast<const solidFluxFvPatchVectorField>
-            (
-                lm_.boundaryField()[patchi]
-            );
         condition.flux(interior, pC, tC);
 
         forAll(faceCells, i)
         {
             torque_ += xM[i] ^ (tC[i]*magSf[i]);
+            faceVelocity_[patch.start() + i] = pC[i]/rho;
         }
 
         if (FUpdate_ == deformationUpdate::compatible)
         {
-            // The velocity constraint of each face, read off the
-            // condition's contact momentum, which is affine in p-:
-            // pC = Pi p- + ..., Pi the projector onto the free directions.
-            // Probed with the reference normals: the projectors of a plane
-            // are then the same at all its faces and commute at its edges,
-            // so every processor combines them at its points alike
-            const scalar dp = rho*law_->Us();
-            const vectorField N(patch.nf());
-            vectorField pProbe(patch.size());
-            vectorField pCBase(patch.size());
-            vectorField pCProbe(patch.size());
-            vectorField tCProbe(patch.size());
-            const solidFluxFvPatchVectorField::interiorState probe
-            {
-                pProbe, tM, N, xM, rho, law_->Up(), law_->Us(), stage
-            };
-            vectorField columns[3];
-
-            pProbe = pM;
-            condition.flux(probe, pCBase, tCProbe);
-
-            for (direction d = 0; d < vector::nComponents; ++d)
-            {
-                vector e(Zero);
-                e[d] = dp;
-                pProbe = pM + e;
-                condition.flux(probe, pCProbe, tCProbe);
-                columns[d] = (pCProbe - pCBase)/dp;
-            }
-
-            const faceList& faces = mesh_.faces();
-
+            // The prescribed traction of the free directions, and the
+            // upwind damping of the fixed ones; their central traction is
+            // the constraint's reaction
             forAll(faceCells, i)
             {
-                const tensor Pi
-                (
-                    tensor(columns[0][i], columns[1][i], columns[2][i]).T()
-                );
-                const tensor fixed(tensor::I - Pi);
-
-                // The prescribed traction of the free directions, and the
-                // upwind damping of the fixed ones (their central traction
-                // is the constraint's reaction)
+                const tensor fixed(tensor::I - faceConstraint_[i]);
                 lmRate_[faceCells[i]] += (tC[i] - (fixed & tM[i]))*magSf[i];
-                faceVelocity_[patch.start() + i] = pC[i]/rho;
-
-                const vector prescribed((fixed & pCBase[i])/rho);
-                for (const label pointi : faces[patch.start() + i])
-                {
-                    constrainEqOp()(pointConstraint_[pointi], Pi);
-                    prescribeEqOp()(pointPrescribed_[pointi], prescribed);
-                }
             }
         }
         else
@@ -475,7 +467,6 @@ void Foam::touchSolid::computeRates(const label stage)
             forAll(faceCells, i)
             {
                 lmRate_[faceCells[i]] += tC[i]*magSf[i];
-                faceVelocity_[patch.start() + i] = pC[i]/rho;
             }
         }
 
@@ -556,6 +547,81 @@ void Foam::touchSolid::computeRates(const label stage)
     {
         lmRate_[celli] /= V[celli];
         FRate_[celli] /= V[celli];
+    }
+}
+
+
+void Foam::touchSolid::pointConstraints
+(
+    const fvPatch& patch,
+    const solidFluxFvPatchVectorField& condition,
+    vectorField& pM,
+    const vectorField& tM,
+    const vectorField& xM,
+    const label stage
+)
+{
+    const scalar rho = law_->rho();
+    const labelUList& faceCells = patch.faceCells();
+    const vectorField& lm = lm_.primitiveField();
+
+    // The velocity constraint of each face, read off the condition's
+    // contact momentum, which is affine in p-: pC = Pi p- + ..., Pi the
+    // projector onto the free directions.  Probed with the reference
+    // normals: the projectors of a plane are then the same at all its faces
+    // and commute at its edges, so every processor combines them alike
+    const scalar dp = rho*law_->Us();
+    const vectorField N(patch.nf());
+    vectorField pProbe(pM);
+    vectorField pCBase(patch.size());
+    vectorField pCProbe(patch.size());
+    vectorField tCProbe(patch.size());
+    const solidFluxFvPatchVectorField::interiorState probe
+    {
+        pProbe, tM, N, xM, rho, law_->Up(), law_->Us(), stage
+    };
+
+    condition.flux(probe, pCBase, tCProbe);
+
+    faceConstraint_.setSize(patch.size());
+    faceConstraint_ = Zero;
+
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        vector e(Zero);
+        e[d] = dp;
+        pProbe = pM + e;
+        condition.flux(probe, pCProbe, tCProbe);
+
+        forAll(pCProbe, i)
+        {
+            const vector column((pCProbe[i] - pCBase[i])/dp);
+            for (direction j = 0; j < vector::nComponents; ++j)
+            {
+                faceConstraint_[i](j, d) = column[j];
+            }
+        }
+    }
+
+    const faceList& faces = mesh_.faces();
+
+    forAll(faceCells, i)
+    {
+        const tensor& Pi = faceConstraint_[i];
+        const tensor fixed(tensor::I - Pi);
+
+        const vector prescribed((fixed & pCBase[i])/rho);
+        for (const label pointi : faces[patch.start() + i])
+        {
+            constrainEqOp()(pointConstraint_[pointi], Pi);
+            prescribeEqOp()(pointPrescribed_[pointi], prescribed);
+        }
+
+        // The fixed directions are damped with the share of the cell's
+        // momentum that the reconstruction keeps there, which can never
+        // feed energy
+        const vector cellFixed(fixed & lm[faceCells[i]]);
+        pM[i] = (Pi & pM[i]) + jumpShare(fixed & pM[i], cellFixed)*cellFixed;
     }
 }
 
