@@ -484,7 +484,7 @@ void Foam::touchSolid::computeRates(const label stage)
     {
         // Point velocities: the fit of the cell velocities and of the
         // contact velocities of the boundary faces
-        pointFit_.interpolate
+        pointFit_->interpolate
         (
             lm_.primitiveField(),
             1/rho,
@@ -496,7 +496,7 @@ void Foam::touchSolid::computeRates(const label stage)
     }
     else
     {
-        pointFit_.interpolate
+        pointFit_->interpolate
         (
             lm_.primitiveField(),
             1/rho,
@@ -758,7 +758,6 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     riemann_(riemannSolver::New(controls_, *law_)),
     reconstruction_(mesh, controls_),
     angularMomentum_(mesh),
-    pointFit_(mesh),
     pointInterpolation_(mesh, reconstruction_),
     CFL_(controls_.get<scalar>("CFL")),
     preserveAngularMomentum_
@@ -858,6 +857,11 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     }
 
     checkBoundaryConditions();
+
+    if (FUpdate_ != deformationUpdate::compatible)
+    {
+        pointFit_.reset(new pointFit(mesh_));
+    }
 
     Info<< "TOUCH: rho " << law_->rho() << ", Up " << law_->Up()
         << ", Us " << law_->Us() << ", CFL " << CFL_
