@@ -480,7 +480,7 @@ void Foam::touchSolid::computeRates(const label stage)
     {
         compatibleRates();
     }
-    else if (FUpdate_ == deformationUpdate::constrained)
+    else
     {
         // Point velocities: the fit of the cell velocities and of the
         // contact velocities of the boundary faces
@@ -491,19 +491,14 @@ void Foam::touchSolid::computeRates(const label stage)
             faceVelocity_,
             pointV_.primitiveFieldRef()
         );
+    }
 
+    if (FUpdate_ == deformationUpdate::constrained)
+    {
         addPointFRate();
     }
-    else
+    else if (FUpdate_ == deformationUpdate::plain)
     {
-        pointFit_->interpolate
-        (
-            lm_.primitiveField(),
-            1/rho,
-            faceVelocity_,
-            pointV_.primitiveFieldRef()
-        );
-
         // Plain TOUCH: the F flux carries the Riemann contact velocity
         forAll(own, facei)
         {
@@ -750,6 +745,12 @@ void Foam::touchSolid::addPointFRate()
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+Foam::label Foam::touchSolid::compatiblePointsSize(const fvMesh& mesh) const
+{
+    return FUpdate_ == deformationUpdate::compatible ? mesh.nPoints() : 0;
+}
+
+
 Foam::touchSolid::touchSolid(const fvMesh& mesh)
 :
     mesh_(mesh),
@@ -834,15 +835,15 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     faceVelocity_(mesh.nFaces(), Zero),
     pointConstraint_
     (
-        FUpdate_ == deformationUpdate::compatible ? mesh.nPoints() : 0
+        compatiblePointsSize(mesh)
     ),
     pointPrescribed_
     (
-        FUpdate_ == deformationUpdate::compatible ? mesh.nPoints() : 0
+        compatiblePointsSize(mesh)
     ),
     pointForce_
     (
-        FUpdate_ == deformationUpdate::compatible ? mesh.nPoints() : 0
+        compatiblePointsSize(mesh)
     ),
     torque_(Zero),
     L0_(Zero),
