@@ -10,9 +10,16 @@ On a 4^3 swinging cube, one mistake at a time:
   - a misspelt reconstruction scheme and limiter in system/fvSolution TOUCH,
   - CFL = 1.5,
   - a boundary condition of lm that is not a solid one (fixedValue),
-  - a missing TOUCH dictionary entry (riemannSolver).
+  - a missing TOUCH dictionary entry (riemannSolver),
+  - a misspelt keyword in an entry of 0/lm: 'tracton' in a traction entry
+    (the cube has none: its skewSymmetricPlane patches become one),
+    'velocty' in a prescribedVelocity entry and in a symmetricPlane entry;
+    the error lists the condition's valid keywords,
+  - a misspelt F update (FUpdate compatibel) and time scheme (timeScheme
+    RK4) in system/fvSolution TOUCH.
 Each run must exit non-zero, its log must contain every expected word, and
-no time folder may be written.
+no time folder may be written.  Every mistake is tried; the failure names
+all that were not refused properly.
 Work folders: test/runs/badInput/.
 """
 
@@ -52,6 +59,24 @@ MISTAKES = [
     ("boundary", "0/lm",
      (r"type\s+symmetricPlane;", "type fixedValue;"),
      ["fixedValue", "lm", "symmetricPlane", "traction"]),
+    ("tractionKeyword", "0/lm",
+     (r"type\s+skewSymmetricPlane;",
+      "type traction; tracton uniform (1e5 0 0);"),
+     ["tracton", "lm", "traction", "pressure"]),
+    ("prescribedVelocityKeyword", "0/lm",
+     (r"type\s+symmetricPlane;",
+      "type prescribedVelocity; velocty uniform (0 0 0);"),
+     ["velocty", "lm", "velocity"]),
+    ("symmetricPlaneKeyword", "0/lm",
+     (r"type\s+symmetricPlane;",
+      "type symmetricPlane; velocty uniform (0 0 0);"),
+     ["velocty", "lm", "patchType"]),
+    ("FUpdate", "system/fvSolution",
+     (r"FUpdate\s+\w+;", "FUpdate compatibel;"),
+     ["compatibel", "fvSolution", "compatible", "constrained", "plain"]),
+    ("timeScheme", "system/fvSolution",
+     (r"(CFL\s+[0-9.]+;)", r"\1\n    timeScheme RK4;"),
+     ["RK4", "fvSolution", "RK2", "RK3"]),
 ]
 
 
@@ -75,23 +100,34 @@ def check(root, label, path, edit, words):
     with open(log) as f:
         output = f.read()
     if status == 0:
-        raise AssertionError("%s: touchFoam accepted the mistake" % label)
+        return "%s: touchFoam accepted the mistake (see %s)" % (label, log)
     missing = [w for w in words if w not in output]
     if missing:
-        raise AssertionError("%s: the error does not name %s (see %s)"
-                             % (label, ", ".join(missing), log))
+        return "%s: the error does not name %s (see %s)" % (
+            label, ", ".join(missing), log)
     written = [d for d in os.listdir(case)
                if re.match(r"^[0-9.e+-]+$", d) and d != "0"]
     if written:
-        raise AssertionError("%s: wrote %s" % (label, written))
-    return label
+        return "%s: wrote %s" % (label, written)
+    return None
 
 
 def body():
     root = testing.work_dir(NAME)
-    checked = [check(root, *m) for m in MISTAKES]
+    refused, failures = [], []
+    for mistake in MISTAKES:
+        failure = check(root, *mistake)
+        print("  %-26s %s" % (mistake[0], failure or "refused"))
+        if failure:
+            failures.append(failure)
+        else:
+            refused.append(mistake[0])
+    if failures:
+        raise AssertionError("%d of %d mistakes not refused properly: %s"
+                             % (len(failures), len(MISTAKES),
+                                "; ".join(failures)))
     return "%d mistakes refused with file, entry and valid choices: %s" % (
-        len(checked), " ".join(checked))
+        len(refused), " ".join(refused))
 
 
 if __name__ == "__main__":

@@ -22,7 +22,8 @@ Description
     system/fvSolution.  Writes lm, v, F, P, sigma, pressure, J, u and pointU.
 
     A run that produces an inverted cell or a non-finite value stops with a
-    message after writing the last good state.  The optional controlDict
+    message naming the cell, its position and the time, after writing the
+    last good state (the law's state included).  The optional controlDict
     entry maxSteps stops (and writes) after that many steps.
 
 Usage
@@ -69,30 +70,17 @@ int main(int argc, char *argv[])
 
         Info<< "Time = " << runTime.timeName() << "  deltaT = " << dt << nl;
 
-        solid.storeOldTime();
-
-        // Each stage must leave a valid state: the next one evaluates the
-        // stress of every cell, which needs det F > 0
-        bool valid = true;
-        for (label stage = 1; stage <= solid.nStages(); ++stage)
+        if (!solid.advance(dt))
         {
-            solid.advanceStage(stage, dt);
-            if (!(valid = solid.valid()))
-            {
-                break;
-            }
-        }
-
-        if (!valid)
-        {
-            solid.restoreOldTime();
+            // The state of the step's start is restored: write it
             runTime.setTime(runTime.value() - dt, runTime.timeIndex() - 1);
             solid.writeOutputFields();
             runTime.writeNow();
 
             FatalErrorInFunction
                 << "Inverted cell (det F <= 0) or non-finite value during"
-                << " the step to time " << runTime.value() + dt << nl
+                << " the step to time " << runTime.value() + dt
+                << " (the cell is named above)" << nl
                 << "    The last good state is written at time "
                 << runTime.timeName() << nl
                 << exit(FatalError);

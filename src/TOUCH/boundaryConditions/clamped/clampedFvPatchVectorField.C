@@ -27,12 +27,23 @@ void Foam::solidFluxConditions::clamped::flux
 }
 
 
+void Foam::solidFluxConditions::clamped::constraint
+(
+    const solidFluxFvPatchVectorField::interiorState&,
+    tensorField& free,
+    vectorField& velocity
+)
+{
+    // Every direction fixed, at rest
+    free = Zero;
+    velocity = Zero;
+}
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 namespace Foam
 {
-    defineNamedTemplateTypeNameAndDebug(clampedFvPatchVectorField, 0);
-    addToPatchFieldRunTimeSelection(fvPatchVectorField, clampedFvPatchVectorField);
+    makeSolidFluxCondition(clamped);
 }
 
 // ************************************************************************* //

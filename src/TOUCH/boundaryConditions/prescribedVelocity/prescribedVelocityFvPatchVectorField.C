@@ -28,7 +28,7 @@ Foam::prescribedVelocityFvPatchVectorField::prescribedVelocityFvPatchVectorField
     const dictionary& dict
 )
 :
-    solidFluxFvPatchVectorField(p, iF, dict),
+    solidFluxFvPatchVectorField(p, iF, dict, wordList({"velocity"})),
     velocity_("velocity", dict, p.size())
 {}
 
@@ -70,6 +70,18 @@ void Foam::prescribedVelocityFvPatchVectorField::flux
 }
 
 
+
+void Foam::prescribedVelocityFvPatchVectorField::constraint
+(
+    const interiorState&,
+    tensorField& free,
+    vectorField& velocity
+) const
+{
+    free = Zero;
+    velocity = velocity_;
+}
+
 void Foam::prescribedVelocityFvPatchVectorField::autoMap(const fvPatchFieldMapper& m)
 {
     solidFluxFvPatchVectorField::autoMap(m);
@@ -103,6 +115,9 @@ void Foam::prescribedVelocityFvPatchVectorField::write(Ostream& os) const
 namespace Foam
 {
     makePatchTypeField(fvPatchVectorField, prescribedVelocityFvPatchVectorField);
+
+    static const solidFluxFvPatchVectorField::addType
+        addPrescribedVelocitySolidFluxType(prescribedVelocityFvPatchVectorField::typeName_());
 }
 
 // ************************************************************************* //

@@ -28,12 +28,26 @@ void Foam::solidFluxConditions::skewSymmetricPlane::flux
 }
 
 
+void Foam::solidFluxConditions::skewSymmetricPlane::constraint
+(
+    const solidFluxFvPatchVectorField::interiorState& s,
+    tensorField& free,
+    vectorField& velocity
+)
+{
+    // The tangential velocity is zero, the normal one free
+    forAll(free, facei)
+    {
+        free[facei] = sqr(s.n[facei]);
+    }
+    velocity = Zero;
+}
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 namespace Foam
 {
-    defineNamedTemplateTypeNameAndDebug(skewSymmetricPlaneFvPatchVectorField, 0);
-    addToPatchFieldRunTimeSelection(fvPatchVectorField, skewSymmetricPlaneFvPatchVectorField);
+    makeSolidFluxCondition(skewSymmetricPlane);
 }
 
 // ************************************************************************* //

@@ -12,6 +12,30 @@ License
 namespace Foam
 {
     defineTypeNameAndDebug(solidFluxFvPatchVectorField, 0);
+
+    //- The registered names; a function-local list, so that registration
+    //  from other translation units never precedes its construction
+    static DynamicList<word>& solidFluxTypes()
+    {
+        static DynamicList<word> names;
+        return names;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
+
+Foam::solidFluxFvPatchVectorField::addType::addType(const word& name)
+{
+    solidFluxTypes().append(name);
+}
+
+
+Foam::wordList Foam::solidFluxFvPatchVectorField::types()
+{
+    wordList names(solidFluxTypes());
+    Foam::sort(names);
+    return names;
 }
 
 
@@ -71,11 +95,29 @@ Foam::solidFluxFvPatchVectorField::solidFluxFvPatchVectorField
 (
     const fvPatch& p,
     const DimensionedField<vector, volMesh>& iF,
-    const dictionary& dict
+    const dictionary& dict,
+    const wordList& conditionKeywords
 )
 :
     fvPatchVectorField(p, iF, dict, false)
 {
+    wordList valid({"type", "value", "patchType"});
+    valid.append(conditionKeywords);
+
+    for (const entry& e : dict)
+    {
+        if (!valid.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown keyword '" << e.keyword() << "' in the entry of"
+                << " patch " << p.name() << " in " << dict.name() << nl
+                << "Valid keywords for type '"
+                << dict.getOrDefault<word>("type", word::null) << "': "
+                << valid << nl
+                << exit(FatalIOError);
+        }
+    }
+
     if (dict.found("value"))
     {
         fvPatchVectorField::operator=(vectorField("value", dict, p.size()));

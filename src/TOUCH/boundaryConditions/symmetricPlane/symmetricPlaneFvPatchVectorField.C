@@ -28,12 +28,26 @@ void Foam::solidFluxConditions::symmetricPlane::flux
 }
 
 
+void Foam::solidFluxConditions::symmetricPlane::constraint
+(
+    const solidFluxFvPatchVectorField::interiorState& s,
+    tensorField& free,
+    vectorField& velocity
+)
+{
+    // The normal velocity is zero, the tangential one free
+    forAll(free, facei)
+    {
+        free[facei] = tensor::I - sqr(s.n[facei]);
+    }
+    velocity = Zero;
+}
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 namespace Foam
 {
-    defineNamedTemplateTypeNameAndDebug(symmetricPlaneFvPatchVectorField, 0);
-    addToPatchFieldRunTimeSelection(fvPatchVectorField, symmetricPlaneFvPatchVectorField);
+    makeSolidFluxCondition(symmetricPlane);
 }
 
 // ************************************************************************* //

@@ -29,7 +29,7 @@ Foam::tractionFvPatchVectorField::tractionFvPatchVectorField
     const dictionary& dict
 )
 :
-    solidFluxFvPatchVectorField(p, iF, dict),
+    solidFluxFvPatchVectorField(p, iF, dict, wordList({"traction", "pressure"})),
     traction_
     (
         dict.found("traction")
@@ -84,6 +84,18 @@ void Foam::tractionFvPatchVectorField::flux
 }
 
 
+
+void Foam::tractionFvPatchVectorField::constraint
+(
+    const interiorState&,
+    tensorField& free,
+    vectorField& velocity
+) const
+{
+    free = tensor::I;
+    velocity = Zero;
+}
+
 void Foam::tractionFvPatchVectorField::autoMap(const fvPatchFieldMapper& m)
 {
     solidFluxFvPatchVectorField::autoMap(m);
@@ -120,6 +132,9 @@ void Foam::tractionFvPatchVectorField::write(Ostream& os) const
 namespace Foam
 {
     makePatchTypeField(fvPatchVectorField, tractionFvPatchVectorField);
+
+    static const solidFluxFvPatchVectorField::addType
+        addTractionSolidFluxType(tractionFvPatchVectorField::typeName_());
 }
 
 // ************************************************************************* //

@@ -6,8 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "solidMonitor.H"
-#include "mechanicalLaw.H"
-#include "volFields.H"
+#include "touchSolid.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -79,32 +78,15 @@ bool Foam::functionObjects::solidMonitor::read(const dictionary& dict)
 
 bool Foam::functionObjects::solidMonitor::execute()
 {
-    const mechanicalLaw& law =
-        mesh_.lookupObject<mechanicalLaw>("mechanicalProperties");
-    const volVectorField& lm = mesh_.lookupObject<volVectorField>("lm");
-    const volTensorField& F = mesh_.lookupObject<volTensorField>("F");
-    const volVectorField& u = mesh_.lookupObject<volVectorField>("u");
+    // The solver's own totals: one definition for the log, the tests and
+    // this file
+    const touchSolid& solid =
+        mesh_.lookupObject<touchSolid>(touchSolid::typeName);
 
-    const scalarField& V = mesh_.V();
-    const vectorField& X = mesh_.C().primitiveField();
-
-    vector p(Zero);
-    vector L(Zero);
-    scalar kinetic = 0;
-
-    forAll(V, celli)
-    {
-        const vector& lmi = lm[celli];
-        p += V[celli]*lmi;
-        L += V[celli]*((X[celli] + u[celli] - origin_) ^ lmi);
-        kinetic += V[celli]*magSqr(lmi);
-    }
-
-    reduce(p, sumOp<vector>());
-    reduce(L, sumOp<vector>());
-    kinetic = returnReduce(kinetic, sumOp<scalar>())/(2*law.rho());
-
-    const scalar stored = law.totalStrainEnergy(F);
+    const vector p(solid.totalLinearMomentum());
+    const vector L(solid.totalAngularMomentum(origin_));
+    const scalar kinetic = solid.kineticEnergy();
+    const scalar stored = solid.strainEnergy();
 
     if (Pstream::master() && writeToFile())
     {

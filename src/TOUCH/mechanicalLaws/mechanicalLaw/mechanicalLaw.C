@@ -85,15 +85,18 @@ Foam::scalar Foam::mechanicalLaw::Us() const
 }
 
 
+void Foam::mechanicalLaw::stress(const tensorField& F, tensorField& P) const
+{
+    forAll(F, celli)
+    {
+        P[celli] = this->P(F[celli]);
+    }
+}
+
+
 void Foam::mechanicalLaw::correct(const volTensorField& F, volTensorField& P)
 {
-    const tensorField& Fi = F.primitiveField();
-    tensorField& Pi = P.primitiveFieldRef();
-
-    forAll(Fi, celli)
-    {
-        Pi[celli] = this->P(Fi[celli]);
-    }
+    stress(F.primitiveField(), P.primitiveFieldRef());
 
     // Non-coupled boundary values are not used by the scheme; the processor
     // values must be exchanged so neighbours see the same stress as in serial

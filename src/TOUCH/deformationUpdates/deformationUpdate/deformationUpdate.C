@@ -1,0 +1,103 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+\*---------------------------------------------------------------------------*/
+
+#include "deformationUpdate.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(deformationUpdate, 0);
+    defineRunTimeSelectionTable(deformationUpdate, dictionary);
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+void Foam::deformationUpdate::boundaryFlux
+(
+    const fvPatch& patch,
+    solidFluxFvPatchVectorField& condition,
+    const solidFluxFvPatchVectorField::interiorState& state,
+    vector& torque
+)
+{
+    vectorField& pC = pC_[patch.index()];
+    vectorField& tC = tC_[patch.index()];
+    const scalarField& magSf = patch.magSf();
+
+    condition.flux(state, pC, tC);
+
+    forAll(tC, i)
+    {
+        torque += state.x[i] ^ (tC[i]*magSf[i]);
+    }
+
+    condition == pC;
+}
+
+
+void Foam::deformationUpdate::addFaceMeanFRate
+(
+    const vectorField& pointV,
+    tensorField& FRate
+) const
+{
+    const faceList& faces = faces_.mesh().faces();
+    const vectorField& Sf = faces_.mesh().faceAreas();
+
+    faces_.forAllFaces
+    (
+        [&](const label facei, const label own, const label nei)
+        {
+            const face& f = faces[facei];
+            vector v(Zero);
+            forAll(f, fp)
+            {
+                v += pointV[f[fp]];
+            }
+
+            const tensor flux((v/f.size())*Sf[facei]);
+            FRate[own] += flux;
+            if (nei >= 0)
+            {
+                FRate[nei] -= flux;
+            }
+        }
+    );
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::deformationUpdate::deformationUpdate
+(
+    const dictionary& controls,
+    solidFaces& faces,
+    const mechanicalLaw& law,
+    const riemannSolver& riemann,
+    const linearReconstruction& reconstruction
+)
+:
+    faces_(faces),
+    law_(law),
+    riemann_(riemann),
+    pC_(faces.mesh().boundary().size()),
+    tC_(faces.mesh().boundary().size())
+{
+    forAll(faces.mesh().boundary(), patchi)
+    {
+        const fvPatch& patch = faces.mesh().boundary()[patchi];
+        const label n = patch.coupled() ? 0 : patch.size();
+
+        pC_.set(patchi, new vectorField(n, Zero));
+        tC_.set(patchi, new vectorField(n, Zero));
+    }
+}
+
+
+// ************************************************************************* //

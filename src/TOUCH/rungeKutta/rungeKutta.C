@@ -1,0 +1,46 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+\*---------------------------------------------------------------------------*/
+
+#include "rungeKutta.H"
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+Foam::scalarList Foam::rungeKutta::weights
+(
+    const dictionary& controls,
+    const word& name
+)
+{
+    if (name == "RK2")
+    {
+        return scalarList({0, 0.5});
+    }
+    if (name == "RK3")
+    {
+        return scalarList({0, 0.75, 1.0/3.0});
+    }
+
+    FatalIOErrorInFunction(controls)
+        << "Entry 'timeScheme' = " << name << " in " << controls.name()
+        << " is not a Runge-Kutta scheme" << nl
+        << "Valid timeScheme names: 2(RK2 RK3)" << nl
+        << exit(FatalIOError);
+
+    return scalarList();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rungeKutta::rungeKutta(const dictionary& controls)
+:
+    name_(controls.getOrDefault<word>("timeScheme", "RK2")),
+    alpha_(weights(controls, name_))
+{}
+
+
+// ************************************************************************* //

@@ -1,0 +1,183 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+\*---------------------------------------------------------------------------*/
+
+#include "solidFaces.H"
+
+// * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- One buffer per patch: sized for the patches that pass the test, empty
+//  for the others
+template<class Type, class Test>
+static void sizeBuffers
+(
+    const fvMesh& mesh,
+    PtrList<Field<Type>>& buffers,
+    const Test& test
+)
+{
+    buffers.setSize(mesh.boundary().size());
+
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh.boundary()[patchi];
+        buffers.set
+        (
+            patchi,
+            new Field<Type>(test(patch) ? patch.size() : 0, Zero)
+        );
+    }
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+Foam::solidFaces::cellValues Foam::solidFaces::cell(const label celli) const
+{
+    return cellValues
+    {
+        lm_[celli], F_[celli], P_[celli],
+        reconstruction_.gradp()[celli],
+        reconstruction_.gradP(0)[celli],
+        reconstruction_.gradP(1)[celli],
+        reconstruction_.gradP(2)[celli],
+        reconstruction_.X()[celli]
+    };
+}
+
+
+Foam::solidFaces::cellValues Foam::solidFaces::neighbour
+(
+    const label patchi,
+    const label i
+) const
+{
+    return cellValues
+    {
+        lmN_[patchi][i], FN_[patchi][i], PN_[patchi][i],
+        gradLmN_[patchi][i],
+        gradPxN_[patchi][i], gradPyN_[patchi][i], gradPzN_[patchi][i],
+        XN_[patchi][i]
+    };
+}
+
+
+void Foam::solidFaces::fillInteriorState(const label patchi)
+{
+    const fvPatch& patch = mesh_.boundary()[patchi];
+    const labelUList& faceCells = patch.faceCells();
+    const vectorField& Cf = mesh_.faceCentres();
+    const vectorField& N = NM_[patchi];
+    vectorField& pM = pM_[patchi];
+    vectorField& tM = tM_[patchi];
+    vectorField& nM = nM_[patchi];
+    vectorField& xM = xM_[patchi];
+
+    forAll(faceCells, i)
+    {
+        const label o = faceCells[i];
+        const cellValues owner(cell(o));
+        const vector r(Cf[patch.start() + i] - owner.X);
+
+        pM[i] = owner.p(r);
+        tM[i] = owner.t(r, N[i]);
+        nM[i] = spatialNormal(owner.F, N[i]);
+        xM[i] = owner.X + u_[o] + (owner.F & r);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::solidFaces::solidFaces
+(
+    const fvMesh& mesh,
+    const linearReconstruction& reconstruction,
+    volVectorField& lm,
+    const volTensorField& F,
+    const volTensorField& P,
+    const volVectorField& u
+)
+:
+    mesh_(mesh),
+    reconstruction_(reconstruction),
+    lm_(lm),
+    F_(F),
+    P_(P),
+    u_(u)
+{
+    auto coupled = [](const fvPatch& patch) { return patch.coupled(); };
+    auto solid = [](const fvPatch& patch) { return !patch.coupled(); };
+
+    sizeBuffers(mesh, lmN_, coupled);
+    sizeBuffers(mesh, FN_, coupled);
+    sizeBuffers(mesh, PN_, coupled);
+    sizeBuffers(mesh, gradLmN_, coupled);
+    sizeBuffers(mesh, gradPxN_, coupled);
+    sizeBuffers(mesh, gradPyN_, coupled);
+    sizeBuffers(mesh, gradPzN_, coupled);
+    sizeBuffers(mesh, XN_, coupled);
+
+    sizeBuffers(mesh, pM_, solid);
+    sizeBuffers(mesh, tM_, solid);
+    sizeBuffers(mesh, nM_, solid);
+    sizeBuffers(mesh, NM_, solid);
+    sizeBuffers(mesh, xM_, solid);
+
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh.boundary()[patchi];
+
+        if (patch.coupled())
+        {
+            XN_[patchi] =
+                reconstruction_.X().boundaryField()[patchi]
+               .patchNeighbourField();
+        }
+        else if (patch.size())
+        {
+            NM_[patchi] = patch.nf();
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::solidFaces::update()
+{
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (!mesh_.boundary()[patchi].coupled())
+        {
+            continue;
+        }
+
+        lmN_[patchi] = lm_.boundaryField()[patchi].patchNeighbourField();
+        FN_[patchi] = F_.boundaryField()[patchi].patchNeighbourField();
+        PN_[patchi] = P_.boundaryField()[patchi].patchNeighbourField();
+        gradLmN_[patchi] =
+            reconstruction_.gradp().boundaryField()[patchi]
+           .patchNeighbourField();
+        gradPxN_[patchi] =
+            reconstruction_.gradP(0).boundaryField()[patchi]
+           .patchNeighbourField();
+        gradPyN_[patchi] =
+            reconstruction_.gradP(1).boundaryField()[patchi]
+           .patchNeighbourField();
+        gradPzN_[patchi] =
+            reconstruction_.gradP(2).boundaryField()[patchi]
+           .patchNeighbourField();
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,112 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+\*---------------------------------------------------------------------------*/
+
+#include "solidFaces.H"
+#include "mechanicalLaw.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class Op>
+void Foam::solidFaces::forAllCoupled(Op op) const
+{
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+
+    forAll(own, facei)
+    {
+        op(facei, own[facei], nei[facei], cell(own[facei]), cell(nei[facei]));
+    }
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh_.boundary()[patchi];
+
+        if (patch.coupled())
+        {
+            const labelUList& faceCells = patch.faceCells();
+
+            forAll(faceCells, i)
+            {
+                op
+                (
+                    patch.start() + i,
+                    faceCells[i],
+                    -1,
+                    cell(faceCells[i]),
+                    neighbour(patchi, i)
+                );
+            }
+        }
+    }
+}
+
+
+template<class Op>
+void Foam::solidFaces::forAllSolidPatches
+(
+    const mechanicalLaw& law,
+    const label stage,
+    Op op
+)
+{
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh_.boundary()[patchi];
+
+        if (patch.coupled() || patch.size() == 0)
+        {
+            continue;
+        }
+
+        fillInteriorState(patchi);
+
+        const solidFluxFvPatchVectorField::interiorState state
+        {
+            pM_[patchi], tM_[patchi], nM_[patchi], xM_[patchi],
+            law.rho(), law.Up(), law.Us(), stage
+        };
+        const solidFluxFvPatchVectorField::interiorState reference
+        {
+            pM_[patchi], tM_[patchi], NM_[patchi], xM_[patchi],
+            law.rho(), law.Up(), law.Us(), stage
+        };
+
+        solidFluxFvPatchVectorField& condition =
+            refCast<solidFluxFvPatchVectorField>(lm_.boundaryFieldRef()[patchi]);
+
+        condition.updateActiveSet(state);
+
+        op(patch, condition, state, reference);
+    }
+}
+
+
+template<class Op>
+void Foam::solidFaces::forAllFaces(Op op) const
+{
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+
+    forAll(own, facei)
+    {
+        op(facei, own[facei], nei[facei]);
+    }
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        const labelUList& faceCells = patch.faceCells();
+
+        forAll(patch, i)
+        {
+            op(patch.start() + i, faceCells[i], -1);
+        }
+    }
+}
+
+
+// ************************************************************************* //
