@@ -15,10 +15,32 @@ void Foam::solidFaces::forAllCoupled(Op op) const
 {
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
+    const vectorField& Sf = mesh_.faceAreas();
+    const vectorField& Cf = mesh_.faceCentres();
+
+    auto visit = [&]
+    (
+        const label facei,
+        const label o,
+        const label n,
+        const cellValues& left,
+        const cellValues& right
+    )
+    {
+        const scalar magSf = mag(Sf[facei]);
+        op
+        (
+            coupledFace
+            {
+                facei, o, n, left, right,
+                magSf, Sf[facei]/magSf, Cf[facei] - left.X, Cf[facei] - right.X
+            }
+        );
+    };
 
     forAll(own, facei)
     {
-        op(facei, own[facei], nei[facei], cell(own[facei]), cell(nei[facei]));
+        visit(facei, own[facei], nei[facei], cell(own[facei]), cell(nei[facei]));
     }
 
     forAll(mesh_.boundary(), patchi)
@@ -31,7 +53,7 @@ void Foam::solidFaces::forAllCoupled(Op op) const
 
             forAll(faceCells, i)
             {
-                op
+                visit
                 (
                     patch.start() + i,
                     faceCells[i],

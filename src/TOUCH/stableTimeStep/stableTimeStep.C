@@ -70,17 +70,9 @@ Foam::scalar Foam::stableTimeStep::calcHmin(const solidFaces& faces)
 
     faces.forAllCoupled
     (
-        [&]
-        (
-            const label facei,
-            const label,
-            const label,
-            const solidFaces::cellValues& left,
-            const solidFaces::cellValues& right
-        )
+        [&](const solidFaces::coupledFace& face)
         {
-            const vector N(Sf[facei]/mag(Sf[facei]));
-            h = min(h, mag((right.X - left.X) & N));
+            h = min(h, mag((face.right.X - face.left.X) & face.N));
         }
     );
 

@@ -53,45 +53,27 @@ void Foam::deformationUpdates::compatible::addUpwindRate
     vectorField& lmRate
 ) const
 {
-    const vectorField& Sf = faces_.mesh().faceAreas();
-    const vectorField& Cf = faces_.mesh().faceCentres();
-
     faces_.forAllCoupled
     (
-        [&]
-        (
-            const label facei,
-            const label own,
-            const label nei,
-            const solidFaces::cellValues& left,
-            const solidFaces::cellValues& right
-        )
+        [&](const solidFaces::coupledFace& face)
         {
-            const scalar magSf = mag(Sf[facei]);
-            const vector N(Sf[facei]/magSf);
-            const vector pL(left.p(Cf[facei] - left.X));
-            const vector pR(right.p(Cf[facei] - right.X));
-            const vector n
-            (
-                solidFaces::spatialNormal(0.5*(left.F + right.F), N)
-            );
-
             // The central traction is the point coupling's; the upwind
             // part damps the share of the cell jump the reconstruction
             // keeps: the flux of the jump alone
-            const vector jump(right.lm - left.lm);
+            const vector jump(face.right.lm - face.left.lm);
             vector pC;
             vector tC;
             riemann_.flux
             (
-                Zero, Zero, jumpShare(pR - pL, jump)*jump, Zero, n, pC, tC
+                Zero, Zero, jumpShare(face.pR() - face.pL(), jump)*jump, Zero,
+                face.n(), pC, tC
             );
 
-            tC *= magSf;
-            lmRate[own] += tC;
-            if (nei >= 0)
+            tC *= face.magSf;
+            lmRate[face.owner] += tC;
+            if (face.neighbour >= 0)
             {
-                lmRate[nei] -= tC;
+                lmRate[face.neighbour] -= tC;
             }
         }
     );

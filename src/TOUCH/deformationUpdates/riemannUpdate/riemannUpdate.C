@@ -18,44 +18,24 @@ void Foam::deformationUpdates::riemannUpdate::momentumRates
 )
 {
     const scalar rho = law_.rho();
-    const vectorField& Sf = faces_.mesh().faceAreas();
-    const vectorField& Cf = faces_.mesh().faceCentres();
-
     faces_.forAllCoupled
     (
-        [&]
-        (
-            const label facei,
-            const label own,
-            const label nei,
-            const solidFaces::cellValues& left,
-            const solidFaces::cellValues& right
-        )
+        [&](const solidFaces::coupledFace& face)
         {
-            const scalar magSf = mag(Sf[facei]);
-            const vector N(Sf[facei]/magSf);
-            const vector rL(Cf[facei] - left.X);
-            const vector rR(Cf[facei] - right.X);
-            const vector n
-            (
-                solidFaces::spatialNormal(0.5*(left.F + right.F), N)
-            );
-
             vector pC;
             vector tC;
             riemann_.flux
             (
-                left.p(rL), left.t(rL, N), right.p(rR), right.t(rR, N),
-                n, pC, tC
+                face.pL(), face.tL(), face.pR(), face.tR(), face.n(), pC, tC
             );
 
-            tC *= magSf;
-            faceVelocity_[facei] = pC/rho;
+            tC *= face.magSf;
+            faceVelocity_[face.facei] = pC/rho;
 
-            lmRate[own] += tC;
-            if (nei >= 0)
+            lmRate[face.owner] += tC;
+            if (face.neighbour >= 0)
             {
-                lmRate[nei] -= tC;
+                lmRate[face.neighbour] -= tC;
             }
         }
     );
