@@ -43,6 +43,21 @@ static inline scalar jumpShare(const vector& reconstructed, const vector& cell)
     return min(max((reconstructed & cell)/cellSqr, scalar(0)), scalar(1));
 }
 
+//- Add a face's force to its points, an equal share each
+static inline void spreadToPoints
+(
+    const face& f,
+    const vector& force,
+    vectorField& pointValues
+)
+{
+    const vector share(force/f.size());
+    for (const label pointi : f)
+    {
+        pointValues[pointi] += share;
+    }
+}
+
 } // End namespace Foam
 
 
@@ -51,12 +66,28 @@ static inline scalar jumpShare(const vector& reconstructed, const vector& cell)
 void Foam::deformationUpdates::compatible::addUpwindRate
 (
     vectorField& lmRate
-) const
+)
 {
+    const faceList& faces = faces_.mesh().faces();
+    const bool upwindPoints = pointUpwinding_ > 0;
+
     faces_.forAllCoupled
     (
         [&](const solidFaces::coupledFace& face)
         {
+            if (upwindPoints)
+            {
+                // The face force of the reconstructed traction jump; a
+                // processor face is visited on both sides, each adds half
+                const scalar share = face.neighbour >= 0 ? 1 : 0.5;
+                spreadToPoints
+                (
+                    faces[face.facei],
+                    (share*face.magSf)*(face.tL() - face.tR()),
+                    reconstructedForce_
+                );
+            }
+
             // The central traction is the point coupling's; the upwind
             // part damps the share of the cell jump the reconstruction
             // keeps: the flux of the jump alone
@@ -140,15 +171,27 @@ void Foam::deformationUpdates::compatible::addBoundaryRate
                 lmRate[faceCells[i]] +=
                     (tC[i] - (fixed & state.t[i]))*magSf[i];
             }
+
+            // The reconstructed traction against the condition's
+            if (pointUpwinding_ > 0)
+            {
+                const faceList& faces = faces_.mesh().faces();
+                forAll(faceCells, i)
+                {
+                    spreadToPoints
+                    (
+                        faces[patch.start() + i],
+                        magSf[i]*(state.t[i] - tC[i]),
+                        reconstructedForce_
+                    );
+                }
+            }
         }
     );
 }
 
 
-void Foam::deformationUpdates::compatible::addTransposeRate
-(
-    vectorField& lmRate
-)
+void Foam::deformationUpdates::compatible::calcNodalForces()
 {
     const faceList& faces = faces_.mesh().faces();
     const vectorField& Sf = faces_.mesh().faceAreas();
@@ -163,16 +206,15 @@ void Foam::deformationUpdates::compatible::addTransposeRate
     (
         [&](const label facei, const label own, const label nei)
         {
-            const vector force
+            const tensor jump(nei >= 0 ? P[own] - P[nei] : P[own]);
+            shares_.forAllPoints
             (
-                (nei >= 0 ? P[own] - P[nei] : P[own]) & Sf[facei]
+                faces[facei], facei, Sf[facei],
+                [&](const label pointi, const vector& s)
+                {
+                    pointForce_[pointi] += jump & s;
+                }
             );
-            const face& f = faces[facei];
-            const vector share(force/f.size());
-            for (const label pointi : f)
-            {
-                pointForce_[pointi] += share;
-            }
         }
     );
 
@@ -180,12 +222,101 @@ void Foam::deformationUpdates::compatible::addTransposeRate
     (
         faces_.mesh(), pointForce_, plusEqOp<vector>(), vector::zero
     );
+}
 
-    // The momentum rate does the opposite work: -A^T Pi^T f
+
+void Foam::deformationUpdates::compatible::addPointUpwinding
+(
+    vectorField& pointV
+)
+{
+    syncTools::syncPointList
+    (
+        faces_.mesh(), reconstructedForce_, plusEqOp<vector>(), vector::zero
+    );
+
+    // w_a = -kappa_a phi_a Pi_a f_a: its stress power -kappa phi |Pi f|^2
+    // can only take energy out, and phi, the share of the nodal force that
+    // the reconstructed traction jumps keep, is O(h) where the stress is
+    // smooth
+    vectorField& freeForce = reconstructedForce_;
+    constraints_.constrainTranspose(freeForce);
+
+    forAll(pointV, pointi)
+    {
+        vector f(pointForce_[pointi]);
+        constraints_.constrainOne(pointi, f);
+
+        const scalar magSqrF = magSqr(f);
+        if (magSqrF > VSMALL)
+        {
+            const scalar phi =
+                min(max((freeForce[pointi] & f)/magSqrF, scalar(0)), scalar(1));
+
+            pointV[pointi] -= (pointMobility_[pointi]*phi)*f;
+        }
+    }
+}
+
+
+void Foam::deformationUpdates::compatible::addTransposeRate
+(
+    vectorField& lmRate
+)
+{
+    // The momentum rate does the opposite work of the central point
+    // motion: -A^T Pi^T f
     constraints_.constrainTranspose(pointForce_);
     pointForce_ = -pointForce_;
 
     pointInterpolation_.addTranspose(pointForce_, lmRate);
+}
+
+
+Foam::scalarField Foam::deformationUpdates::compatible::calcPointMobility
+(
+    const fvMesh& mesh,
+    const scalar coefficient,
+    const scalar impedance
+)
+{
+    if (!(coefficient > 0))
+    {
+        return scalarField();
+    }
+
+    // The area of a point, a third of the sum of its faces' shares (a
+    // processor face counts half on each side): a plane wave's traction
+    // jump [[t]] on a hexahedral mesh gives f_a = [[t]] S_a, so that
+    // w = f/(2 rho Up S_a) is the Riemann contact velocity [[t]]/(2 rho Up)
+    scalarField area(mesh.nPoints(), Zero);
+    const faceList& faces = mesh.faces();
+    const vectorField& Sf = mesh.faceAreas();
+
+    forAll(faces, facei)
+    {
+        scalar share = 1.0/(3*faces[facei].size());
+        if (!mesh.isInternalFace(facei))
+        {
+            const label patchi = mesh.boundaryMesh().whichPatch(facei);
+            if (mesh.boundary()[patchi].coupled())
+            {
+                share *= 0.5;
+            }
+            else if (mesh.boundary()[patchi].size() == 0)
+            {
+                continue;
+            }
+        }
+        for (const label pointi : faces[facei])
+        {
+            area[pointi] += share*mag(Sf[facei]);
+        }
+    }
+
+    syncTools::syncPointList(mesh, area, plusEqOp<scalar>(), scalar(0));
+
+    return coefficient/(2*impedance*area);
 }
 
 
@@ -205,8 +336,22 @@ Foam::deformationUpdates::compatible::compatible
     constraints_(faces.mesh()),
     faceFree_(faces.mesh().boundary().size()),
     faceVelocity_(faces.mesh().boundary().size()),
-    pointForce_(faces.mesh().nPoints(), Zero)
+    pointForce_(faces.mesh().nPoints(), Zero),
+    pointUpwinding_(controls.getOrDefault<scalar>("pointUpwinding", 1)),
+    pointMobility_
+    (
+        calcPointMobility(faces.mesh(), pointUpwinding_, law.rho()*law.Up())
+    ),
+    reconstructedForce_(pointUpwinding_ > 0 ? faces.mesh().nPoints() : 0)
 {
+    if (pointUpwinding_ < 0)
+    {
+        FatalIOErrorInFunction(controls)
+            << "Entry 'pointUpwinding' = " << pointUpwinding_ << " in "
+            << controls.name() << " is out of range: valid values are >= 0"
+            << nl << exit(FatalIOError);
+    }
+
     forAll(faces.mesh().boundary(), patchi)
     {
         const label n = pC_[patchi].size();
@@ -229,15 +374,23 @@ void Foam::deformationUpdates::compatible::rates
 )
 {
     constraints_.reset();
+    reconstructedForce_ = Zero;
 
     addUpwindRate(lmRate);
     addBoundaryRate(stage, lmRate, torque);
 
     constraints_.finalise();
+    calcNodalForces();
 
-    // Point velocities v_a = Pi_a (A v)_a + b_a
+    // Point velocities v_a = Pi_a (A v)_a + b_a, and the upwinding of the
+    // nodal forces
     pointInterpolation_.interpolate(faces_.lm(), 1/law_.rho(), pointV);
     constraints_.constrain(pointV);
+
+    if (pointUpwinding_ > 0)
+    {
+        addPointUpwinding(pointV);
+    }
 
     // F follows the point motion alone (no upwind part: see the header)
     addFaceMeanFRate(pointV, FRate);

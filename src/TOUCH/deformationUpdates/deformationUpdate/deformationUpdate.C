@@ -54,14 +54,16 @@ void Foam::deformationUpdate::addFaceMeanFRate
     (
         [&](const label facei, const label own, const label nei)
         {
-            const face& f = faces[facei];
-            vector v(Zero);
-            forAll(f, fp)
-            {
-                v += pointV[f[fp]];
-            }
+            tensor flux(Zero);
+            shares_.forAllPoints
+            (
+                faces[facei], facei, Sf[facei],
+                [&](const label pointi, const vector& s)
+                {
+                    flux += pointV[pointi]*s;
+                }
+            );
 
-            const tensor flux((v/f.size())*Sf[facei]);
             FRate[own] += flux;
             if (nei >= 0)
             {
@@ -86,6 +88,7 @@ Foam::deformationUpdate::deformationUpdate
     faces_(faces),
     law_(law),
     riemann_(riemann),
+    shares_(faces.mesh()),
     pC_(faces.mesh().boundary().size()),
     tC_(faces.mesh().boundary().size())
 {
