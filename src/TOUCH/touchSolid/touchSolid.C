@@ -219,6 +219,18 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
 {
     checkInput();
 
+    const scalar stableCFL = update_->stableCFL(rungeKutta_.name());
+    if (timeStep_.CFL() > stableCFL)
+    {
+        WarningInFunction
+            << "Entry 'CFL' = " << timeStep_.CFL() << " in "
+            << controls_.name() << " is above " << stableCFL
+            << ", the largest CFL number at which FUpdate "
+            << update_->type() << " with timeScheme " << rungeKutta_.name()
+            << " was measured stable (validation/stabilityMap): the energy"
+            << " may grow and cells invert" << endl;
+    }
+
     Info<< "TOUCH: rho " << law_->rho() << ", Up " << law_->Up()
         << ", Us " << law_->Us() << ", CFL " << timeStep_.CFL()
         << ", h_min " << timeStep_.hMin() << nl
