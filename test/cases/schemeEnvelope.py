@@ -1,0 +1,113 @@
+#!/usr/bin/python3
+"""The default scheme's envelope at reduced size (issue 9; the full map is
+validation/stabilityMap).
+
+    /usr/bin/python3 test/cases/schemeEnvelope.py
+
+The twisting column (tutorials/twistingColumn, nu 0.45 unless stated,
+default FUpdate compatible, RK2), from the solidMonitor (every step):
+  - 4 x 24 x 4 at CFL 0.6 and 0.7 to t = 0.3 s: the total energy never
+    grows (largest change per step <= 1e-10 E0);
+  - coarse 2 x 12 x 2 and 3 x 18 x 3 at the tutorial CFL to 0.3 s: likewise;
+  - nu 0.499 and 0.4999 on 4 x 24 x 4 at CFL 0.6 to t = 0.1 s: likewise,
+    and the twist at t = 0.1 s within 10 % of nu 0.45's;
+  - the polyhedral dual (polyDualMesh) of 4 x 24 x 4 to t = 0.1 s: energy
+    never grows, twist within 10 % of the hexahedral one.
+Tetrahedra are test/cases/tetrahedralTwist.py (a known failure).
+Work folders: test/runs/schemeEnvelope/.
+"""
+
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "bin", "python"))
+
+import numpy as np  # noqa: E402
+
+from touchfoam import cases, gmsh, postprocess, run, testing  # noqa: E402
+
+NAME = "schemeEnvelope"
+ENERGY_TOL = 1e-10
+TWIST_TOL = 0.10
+PYTHON = "/usr/bin/python3"
+
+
+def column(root, label, n=4, nu=None, cfl=None, end=0.3, mesh="hex"):
+    """Run a twisting column; returns (largest energy change per step / E0,
+    twist at 0.1 s in degrees)."""
+    case = os.path.join(root, label)
+    touch = {} if cfl is None else {"CFL": cfl}
+    cases.prepare("twistingColumn", case, n=n, nu=nu, touch=touch,
+                  control={"endTime": end, "writeInterval": 0.01},
+                  initialise=(mesh == "hex"))
+    if mesh == "poly":
+        run.run(["polyDualMesh", "80", "-overwrite", "-concaveMultiCells"],
+                case)
+    elif mesh == "tet":
+        faces = {f: "free" for f in gmsh.PATCHES}
+        faces["Y0"] = "base"
+        gmsh.write_box_msh(os.path.join(case, "column.msh"), (n, 6 * n, n),
+                           (-0.5, 0.0, -0.5), (0.5, 6.0, 0.5), faces,
+                           "column")
+        run.run(["gmshToFoam", "column.msh"], case)
+    if mesh != "hex":
+        run.restore0(case)
+        run.run([PYTHON, "initialise.py"], case, "initialise")
+    run.run(["touchFoam"], case, timeout=testing.RUN_TIMEOUT)
+    gain, E0, samples = postprocess.energy_increase(
+        case, postprocess.initial_energy(case))
+    twist = dict(postprocess.column_twist(case)).get(0.1)
+    if twist is None:
+        twist = [th for t, th in postprocess.column_twist(case)
+                 if abs(t - 0.1) < 1e-9][0]
+    return gain, float(np.degrees(twist))
+
+
+def body():
+    root = testing.work_dir(NAME)
+    failures = []
+    lines = []
+
+    def energy(label, gain):
+        lines.append("%s dE/E0 %+.1e" % (label, gain))
+        if gain > ENERGY_TOL:
+            failures.append("%s: the energy grew by %.2e E0 in a step"
+                            % (label, gain))
+
+    for cfl in (0.6, 0.7):
+        gain, _ = column(root, "n4_CFL%g" % cfl, cfl=cfl)
+        energy("4x24x4 CFL %g" % cfl, gain)
+    for n in (2, 3):
+        gain, _ = column(root, "n%d" % n, n=n)
+        energy("%dx%dx%d" % (n, 6 * n, n), gain)
+
+    gain, reference = column(root, "n4_nu0.45_to0.1", cfl=0.6, end=0.1)
+    energy("nu 0.45", gain)
+    twists = {"hex": reference}
+    for nu in (0.499, 0.4999):
+        gain, twist = column(root, "n4_nu%s" % nu, nu=nu, cfl=0.6, end=0.1)
+        energy("nu %s" % nu, gain)
+        twists["nu %s" % nu] = twist
+    for mesh in ("poly",):
+        gain, twist = column(root, "n4_" + mesh, end=0.1, mesh=mesh)
+        energy(mesh, gain)
+        twists[mesh] = twist
+
+    for label, twist in twists.items():
+        if label == "hex":
+            continue
+        change = abs(twist - reference) / reference
+        lines.append("twist %s %.1f deg (%+.1f %%)"
+                     % (label, twist, 100 * (twist - reference) / reference))
+        if change > TWIST_TOL:
+            failures.append("twist %s %.1f deg differs from %.1f by %.1f %%"
+                            % (label, twist, reference, 100 * change))
+    summary = "; ".join(lines) + "; twist hex %.1f deg" % reference
+    if failures:
+        raise AssertionError("; ".join(failures) + " | " + summary)
+    return summary
+
+
+if __name__ == "__main__":
+    sys.exit(testing.run_test(NAME, body))
