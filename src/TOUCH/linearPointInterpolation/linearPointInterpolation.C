@@ -13,15 +13,30 @@ License
 Foam::linearPointInterpolation::linearPointInterpolation
 (
     const fvMesh& mesh,
-    const linearReconstruction& reconstruction
+    const linearReconstruction& reconstruction,
+    const bool limited
 )
 :
     mesh_(mesh),
     reconstruction_(reconstruction),
     nPointCells_(mesh.nPoints(), Zero),
     cellWork_(mesh.nCells()),
-    boundaryFaceWork_(mesh.nBoundaryFaces())
+    boundaryFaceWork_(mesh.nBoundaryFaces()),
+    limited_(limited)
 {
+    if
+    (
+        limited_
+     && reconstruction_.schemeType()
+     != linearReconstruction::scheme::limitedLinear
+    )
+    {
+        FatalErrorInFunction
+            << "A limited point interpolation takes its limiter from the"
+            << " reconstruction, which must be limitedLinear" << nl
+            << exit(FatalError);
+    }
+
     const labelListList& pointCells = mesh_.pointCells();
 
     forAll(pointCells, pointi)
@@ -84,6 +99,22 @@ void Foam::linearPointInterpolation::interpolate
     const vectorField& X = reconstruction_.X().primitiveField();
     const labelListList& pointCells = mesh_.pointCells();
 
+    if (limited_)
+    {
+        // The reconstruction's limiter of each component of p, on the
+        // column of the gradient that carries it
+        const vectorField& phi = reconstruction_.momentumLimiter();
+        forAll(grad, celli)
+        {
+            const vector& f = phi[celli];
+            grad[celli] = cmptMultiply
+            (
+                grad[celli],
+                tensor(f.x(), f.y(), f.z(), f.x(), f.y(), f.z(), f.x(), f.y(), f.z())
+            );
+        }
+    }
+
     forAll(pointCells, pointi)
     {
         vector sum(Zero);
@@ -132,7 +163,16 @@ void Foam::linearPointInterpolation::addTranspose
             H += share*(points[pointi] - X[celli]);
         }
         cellValues[celli] += sum;
-        dual[celli] = H;
+        // Row d of the dual is component d's
+        dual[celli] =
+            limited_
+          ? tensor
+            (
+                reconstruction_.momentumLimiter()[celli].x()*H.x(),
+                reconstruction_.momentumLimiter()[celli].y()*H.y(),
+                reconstruction_.momentumLimiter()[celli].z()*H.z()
+            )
+          : H;
     }
 
     // The gradients: grad_e gains w (x) (U_other - U_e) at every face, so

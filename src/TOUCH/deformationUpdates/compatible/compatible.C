@@ -7,6 +7,7 @@ License
 
 #include "compatible.H"
 #include "syncTools.H"
+#include "Switch.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -332,7 +333,17 @@ Foam::deformationUpdates::compatible::compatible
 )
 :
     deformationUpdate(controls, faces, law, riemann, reconstruction),
-    pointInterpolation_(faces.mesh(), reconstruction),
+    pointInterpolation_
+    (
+        faces.mesh(),
+        reconstruction,
+        controls.getOrDefault<Switch>
+        (
+            "pointLimiter",
+            reconstruction.schemeType()
+         == linearReconstruction::scheme::limitedLinear
+        )
+    ),
     constraints_(faces.mesh()),
     faceFree_(faces.mesh().boundary().size()),
     faceVelocity_(faces.mesh().boundary().size()),

@@ -305,14 +305,13 @@ void Foam::linearReconstruction::update
 
     if (scheme_ == scheme::limitedLinear)
     {
-        const vectorField phip
-        (
+        momentumLimiter_ =
             limiterFactors
             (
                 p,
                 [&](const label c, const vector& r) { return r & gp[c]; }
-            )
-        );
+            );
+        const vectorField& phip = momentumLimiter_;
 
         const tensorField phiP
         (
