@@ -21,7 +21,10 @@ Description
     - free velocity (nothing prescribed in the free directions)
     must be round-off (1e-12).  That the check can fail is checked too:
     wrong pairings (symmetricPlane's flux against clamped's constraint, ...)
-    must violate it by far.  A registered condition without a test entry
+    must violate it by far.  The rigid wall is set up through the middle
+    of each patch with the random face positions x = C_f + (+-0.1) on
+    both sides of it, fixed and moving: both its faces in contact and its
+    separated faces must have been met (it is checked).  A registered condition without a test entry
     here is tested with 'type <name>;' alone, and fails if that is not
     enough to construct it.
     Exits non-zero on any wrong answer.
@@ -107,12 +110,18 @@ struct residuals
     //- |free velocity| rho / momentum scale
     scalar freeVelocity = 0;
 
+    //- Faces met free in every direction, and with a fixed direction
+    label nFree = 0;
+    label nFixed = 0;
+
     void worst(const residuals& r)
     {
         kinematic = max(kinematic, r.kinematic);
         symmetry = max(symmetry, r.symmetry);
         idempotency = max(idempotency, r.idempotency);
         freeVelocity = max(freeVelocity, r.freeVelocity);
+        nFree += r.nFree;
+        nFixed += r.nFixed;
     }
 };
 
@@ -187,6 +196,10 @@ residuals measure
         state.symmetry = max(mag(free - free.T()));
         state.idempotency = max(mag((free & free) - free));
         state.freeVelocity = max(mag(free & velocity))*rho/scale;
+        forAll(free, facei)
+        {
+            (mag(fixed[facei]) < tolerance ? state.nFree : state.nFixed) += 1;
+        }
 
         r.worst(state);
     }
@@ -200,6 +213,20 @@ dictionary lmEntry(const string& text)
 {
     IStringStream is(text);
     return dictionary(is);
+}
+
+
+//- A rigid wall through the middle of a patch, its normal into the solid,
+//  moving with the given velocity
+dictionary rigidWallEntry(const fvPatch& patch, const vector& velocity)
+{
+    const vector normal(-gSum(patch.Sf())/gSum(patch.magSf()));
+    const vector point(gSum(patch.Cf()*patch.magSf())/gSum(patch.magSf()));
+
+    OStringStream os;
+    os  << "type rigidWall; point " << point << "; normal " << normal
+        << "; velocity " << velocity << ";";
+    return lmEntry(os.str());
 }
 
 
@@ -346,10 +373,24 @@ int main(int argc, char *argv[])
         {
             "traction", "traction (free surface)",
             fixedEntry("type traction;")
+        },
+        {
+            "rigidWall", "rigidWall (fixed)",
+            [](const fvPatch& patch)
+            {
+                return rigidWallEntry(patch, Zero);
+            }
+        },
+        {
+            "rigidWall", "rigidWall (moving)",
+            [](const fvPatch& patch)
+            {
+                return rigidWallEntry(patch, vector(0.3, -0.7, 1.1));
+            }
         }
     });
 
-    // Every registered condition is tested: the five above must be
+    // Every registered condition is tested: the ones above must be
     // registered, any other with its type alone
     const wordList types(solidFluxFvPatchVectorField::types());
     Info<< "Solid boundary conditions: " << types << nl;
@@ -439,6 +480,16 @@ int main(int argc, char *argv[])
                 worst.freeVelocity,
                 tolerance
             );
+            if (c.type == "rigidWall")
+            {
+                report.check
+                (
+                    what + "switches (" + Foam::name(worst.nFixed)
+                  + " faces met in contact, " + Foam::name(worst.nFree)
+                  + " separated)",
+                    worst.nFixed > 0 && worst.nFree > 0
+                );
+            }
         }
     }
 
@@ -452,7 +503,10 @@ int main(int argc, char *argv[])
         {"symmetricPlane", "clamped"},
         {"skewSymmetricPlane", "symmetricPlane"},
         {"prescribedVelocity (nonuniform)", "prescribedVelocity (uniform)"},
-        {"traction (uniform, pressure)", "clamped"}
+        {"traction (uniform, pressure)", "clamped"},
+        {"rigidWall (moving)", "symmetricPlane"},
+        {"traction (free surface)", "rigidWall (moving)"},
+        {"rigidWall (fixed)", "rigidWall (moving)"}
     };
 
     auto labelled = [&conditions](const string& label) -> const testCondition&

@@ -146,17 +146,21 @@ void Foam::deformationUpdates::compatible::addBoundaryRate
             );
             constraints_.add(patch, free, faceVelocity_[patchi]);
 
-            // The fixed directions are damped with the share of the cell's
-            // momentum that the reconstruction keeps there, which can never
-            // feed energy
+            // The fixed directions are damped towards the prescribed
+            // momentum with the share of the cell's departure from it that
+            // the reconstruction keeps there, which can never feed energy
+            // (towards zero instead, a moving wall's bounce was off by
+            // 1.2e-3 in momentum)
             vectorField& pM = faces_.interiorMomentum(patchi);
+            const scalar rho = law_.rho();
             forAll(faceCells, i)
             {
                 const tensor fixed(tensor::I - free[i]);
-                const vector cellFixed(fixed & lm[faceCells[i]]);
+                const vector pStar(rho*faceVelocity_[patchi][i]);
+                const vector departure((fixed & lm[faceCells[i]]) - pStar);
                 pM[i] =
-                    (free[i] & pM[i])
-                  + jumpShare(fixed & pM[i], cellFixed)*cellFixed;
+                    (free[i] & pM[i]) + pStar
+                  + jumpShare((fixed & pM[i]) - pStar, departure)*departure;
             }
 
             boundaryFlux(patch, condition, state, torque);

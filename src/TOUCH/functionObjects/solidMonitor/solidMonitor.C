@@ -7,6 +7,7 @@ License
 
 #include "solidMonitor.H"
 #include "touchSolid.H"
+#include "rigidWallFvPatchVectorField.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -23,6 +24,28 @@ namespace functionObjects
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
+Foam::labelList Foam::functionObjects::solidMonitor::findWallPatches() const
+{
+    if (!mesh_.foundObject<touchSolid>(touchSolid::typeName))
+    {
+        return labelList();
+    }
+
+    const touchSolid& solid =
+        mesh_.lookupObject<touchSolid>(touchSolid::typeName);
+
+    DynamicList<label> walls;
+    forAll(solid.lm().boundaryField(), patchi)
+    {
+        if (isA<rigidWallFvPatchVectorField>(solid.lm().boundaryField()[patchi]))
+        {
+            walls.append(patchi);
+        }
+    }
+    return labelList(std::move(walls));
+}
+
+
 void Foam::functionObjects::solidMonitor::writeFileHeader(Ostream& os)
 {
     writeHeader(os, "Invariants of the solid");
@@ -36,6 +59,12 @@ void Foam::functionObjects::solidMonitor::writeFileHeader(Ostream& os)
     )
     {
         writeTabbed(os, title);
+    }
+    for (const label patchi : wallPatches_)
+    {
+        const word& name = mesh_.boundary()[patchi].name();
+        writeTabbed(os, "contactFaces(" + name + ")");
+        writeTabbed(os, "wallForce(" + name + ")");
     }
     os  << endl;
 }
@@ -52,7 +81,8 @@ Foam::functionObjects::solidMonitor::solidMonitor
 :
     fvMeshFunctionObject(name, runTime, dict),
     writeFile(mesh_, name, typeName, dict),
-    origin_(Zero)
+    origin_(Zero),
+    wallPatches_(findWallPatches())
 {
     read(dict);
 
@@ -88,6 +118,20 @@ bool Foam::functionObjects::solidMonitor::execute()
     const scalar kinetic = solid.kineticEnergy();
     const scalar stored = solid.strainEnergy();
 
+    // Every rank takes part in the sums of the walls
+    labelList contactFaces(wallPatches_.size());
+    scalarField wallForce(wallPatches_.size());
+    forAll(wallPatches_, i)
+    {
+        const rigidWallFvPatchVectorField& wall =
+            refCast<const rigidWallFvPatchVectorField>
+            (
+                solid.lm().boundaryField()[wallPatches_[i]]
+            );
+        contactFaces[i] = wall.nContactFaces();
+        wallForce[i] = wall.contactForce() & wall.normal();
+    }
+
     if (Pstream::master() && writeToFile())
     {
         OFstream& os = file();
@@ -95,8 +139,12 @@ bool Foam::functionObjects::solidMonitor::execute()
         writeCurrentTime(os);
         os  << tab << p.x() << tab << p.y() << tab << p.z()
             << tab << L.x() << tab << L.y() << tab << L.z()
-            << tab << kinetic << tab << stored << tab << kinetic + stored
-            << endl;
+            << tab << kinetic << tab << stored << tab << kinetic + stored;
+        forAll(wallPatches_, i)
+        {
+            os  << tab << contactFaces[i] << tab << wallForce[i];
+        }
+        os  << endl;
     }
 
     return true;
