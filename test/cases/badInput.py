@@ -16,7 +16,8 @@ On a 4^3 swinging cube, one mistake at a time:
     'velocty' in a prescribedVelocity entry and in a symmetricPlane entry;
     the error lists the condition's valid keywords,
   - a misspelt F update (FUpdate compatibel) and time scheme (timeScheme
-    RK4) in system/fvSolution TOUCH.
+    RK4) in system/fvSolution TOUCH,
+  - model vonMisesPlastic with yieldStress 0, and with hardeningModulus -1.
 Each run must exit non-zero, its log must contain every expected word, and
 no time folder may be written.  Every mistake is tried; the failure names
 all that were not refused properly.
@@ -77,6 +78,15 @@ MISTAKES = [
     ("timeScheme", "system/fvSolution",
      (r"(CFL\s+[0-9.]+;)", r"\1\n    timeScheme RK4;"),
      ["RK4", "fvSolution", "RK2", "RK3"]),
+    ("yieldStress", "constant/mechanicalProperties",
+     (r"model\s+\w+;",
+      "model vonMisesPlastic;\nyieldStress 0;\nhardeningModulus 1e5;"),
+     ["'yieldStress'", "mechanicalProperties", "0 < yieldStress"]),
+    ("hardeningModulus", "constant/mechanicalProperties",
+     (r"model\s+\w+;",
+      "model vonMisesPlastic;\nyieldStress 1e4;\nhardeningModulus -1;"),
+     ["'hardeningModulus'", "mechanicalProperties",
+      "0 <= hardeningModulus"]),
 ]
 
 

@@ -146,7 +146,10 @@ void Foam::mechanicalLaws::historyElastic::advanceStage(const scalar alpha)
 }
 
 
-void Foam::mechanicalLaws::historyElastic::commitStep()
+void Foam::mechanicalLaws::historyElastic::commitStep
+(
+    const volTensorField&
+)
 {
     scalarField& s = maxStretch_.primitiveFieldRef();
 

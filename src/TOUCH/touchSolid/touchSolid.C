@@ -276,7 +276,7 @@ bool Foam::touchSolid::advance(const scalar dt)
         }
     }
 
-    law_->commitStep();
+    law_->commitStep(F_);
 
     return true;
 }

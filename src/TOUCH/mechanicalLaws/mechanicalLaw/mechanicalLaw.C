@@ -23,17 +23,20 @@ Foam::scalar Foam::mechanicalLaw::readBounded
 (
     const word& entry,
     const scalar lower,
-    const scalar upper
+    const scalar upper,
+    const bool includeLower
 ) const
 {
     const scalar value = get<scalar>(entry);
+    const bool aboveLower = includeLower ? value >= lower : value > lower;
 
-    if (!(value > lower && value < upper))
+    if (!(aboveLower && value < upper))
     {
         FatalIOErrorInFunction(*this)
             << "Entry '" << entry << "' = " << value << " in "
             << objectPath() << " is out of range: valid values satisfy "
-            << lower << " < " << entry << " < " << upper << nl
+            << lower << (includeLower ? " <= " : " < ") << entry << " < "
+            << upper << nl
             << exit(FatalIOError);
     }
 

@@ -1,0 +1,455 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+\*---------------------------------------------------------------------------*/
+
+#include "vonMisesPlastic.H"
+#include "zeroGradientFvPatchFields.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace mechanicalLaws
+{
+    defineTypeNameAndDebug(vonMisesPlastic, 0);
+    addToRunTimeSelectionTable(mechanicalLaw, vonMisesPlastic, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
+
+void Foam::mechanicalLaws::vonMisesPlastic::eigen
+(
+    const symmTensor& A,
+    vector& values,
+    tensor& vectors
+)
+{
+    // Cyclic Jacobi (Numerical Recipes, 3rd ed., 11.1).  OpenFOAM v1912's
+    // eigenValues solves the characteristic cubic, which loses half the
+    // digits of nearly repeated eigenvalues (be near I: every elastic cell)
+    // and whose eigenVectors uses absolute thresholds (SMALL); Jacobi
+    // rotations keep every eigenvalue accurate to rounding of |A| and the
+    // eigenvectors orthonormal, and A = I needs no rotation at all.
+    scalar a[3][3] =
+    {
+        {A.xx(), A.xy(), A.xz()},
+        {A.xy(), A.yy(), A.yz()},
+        {A.xz(), A.yz(), A.zz()}
+    };
+    scalar v[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+
+    static const label pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+
+    for (label sweep = 0; sweep < 50; ++sweep)
+    {
+        if (a[0][1] == 0 && a[0][2] == 0 && a[1][2] == 0)
+        {
+            break;
+        }
+
+        for (const auto& pq : pairs)
+        {
+            const label p = pq[0];
+            const label q = pq[1];
+            const scalar apq = a[p][q];
+
+            if (apq == 0)
+            {
+                continue;
+            }
+
+            // After a few sweeps an element below rounding of both its
+            // diagonal entries is zero
+            const scalar g = 100*mag(apq);
+            if
+            (
+                sweep > 3
+             && mag(a[p][p]) + g == mag(a[p][p])
+             && mag(a[q][q]) + g == mag(a[q][q])
+            )
+            {
+                a[p][q] = a[q][p] = 0;
+                continue;
+            }
+
+            // The rotation in the (p, q) plane that zeroes a[p][q]
+            const scalar h = a[q][q] - a[p][p];
+            scalar t;
+            if (mag(h) + g == mag(h))
+            {
+                t = apq/h;
+            }
+            else
+            {
+                const scalar theta = 0.5*h/apq;
+                t = 1/(mag(theta) + Foam::sqrt(1 + sqr(theta)));
+                if (theta < 0)
+                {
+                    t = -t;
+                }
+            }
+            const scalar c = 1/Foam::sqrt(1 + sqr(t));
+            const scalar s = t*c;
+
+            a[p][p] -= t*apq;
+            a[q][q] += t*apq;
+            a[p][q] = a[q][p] = 0;
+
+            const label r = 3 - p - q;
+            const scalar arp = a[r][p];
+            const scalar arq = a[r][q];
+            a[r][p] = a[p][r] = c*arp - s*arq;
+            a[r][q] = a[q][r] = s*arp + c*arq;
+
+            for (label k = 0; k < 3; ++k)
+            {
+                const scalar vkp = v[k][p];
+                const scalar vkq = v[k][q];
+                v[k][p] = c*vkp - s*vkq;
+                v[k][q] = s*vkp + c*vkq;
+            }
+        }
+    }
+
+    values = vector(a[0][0], a[1][1], a[2][2]);
+
+    // The columns of v are the eigenvectors: the rows of vectors
+    vectors = tensor
+    (
+        v[0][0], v[1][0], v[2][0],
+        v[0][1], v[1][1], v[2][1],
+        v[0][2], v[1][2], v[2][2]
+    );
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::mechanicalLaws::vonMisesPlastic::elasticEnergy
+(
+    const symmTensor& tau,
+    const scalar J
+) const
+{
+    // tau' = 2 mu dev(ln V_e): mu |dev ln V_e|^2 = |tau'|^2/(4 mu)
+    return magSqr(dev(tau))/(4*mu_) + 0.5*kappa_*sqr(Foam::log(J));
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::mechanicalLaws::vonMisesPlastic::vonMisesPlastic
+(
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+:
+    mechanicalLaw(mesh, dict),
+    yieldStress_(readBounded("yieldStress", 0, GREAT)),
+    hardeningModulus_(readBounded("hardeningModulus", 0, GREAT, true)),
+    CpInv_
+    (
+        IOobject
+        (
+            "CpInv",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedSymmTensor("I", dimless, symmTensor::I),
+        zeroGradientFvPatchSymmTensorField::typeName
+    ),
+    epsilonP_
+    (
+        IOobject
+        (
+            "epsilonP",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("0", dimless, Zero),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    CpInv0_(CpInv_.primitiveField()),
+    epsilonP0_(epsilonP_.primitiveField()),
+    CpInvBase_(CpInv_.primitiveField()),
+    epsilonPBase_(epsilonP_.primitiveField()),
+    CpInvTrial_(CpInv_.primitiveField()),
+    epsilonPTrial_(epsilonP_.primitiveField()),
+    firstStage_(true)
+{
+    CpInv_.correctBoundaryConditions();
+    epsilonP_.correctBoundaryConditions();
+
+    Info<< "vonMisesPlastic: yield stress " << yieldStress_
+        << ", hardening modulus " << hardeningModulus_
+        << ", max equivalent plastic strain " << gMax(epsilonP_) << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::mechanicalLaws::vonMisesPlastic::elasticTrial
+(
+    const tensor& F,
+    const symmTensor& CpInv,
+    vector& lnLambda,
+    vector& tauDev,
+    tensor& n
+) const
+{
+    // Elastic left Cauchy-Green tensor and its principal stretches
+    vector lambdaSqr;
+    eigen(transform(F, CpInv), lambdaSqr, n);
+
+    lnLambda = vector
+    (
+        0.5*Foam::log(lambdaSqr.x()),
+        0.5*Foam::log(lambdaSqr.y()),
+        0.5*Foam::log(lambdaSqr.z())
+    );
+
+    // The deviator of the logarithmic stretches: traceless whatever
+    // det Cp^-1 is (= ln lambda_i - ln J/3 when det Cp^-1 = 1)
+    tauDev = 2*mu_*(lnLambda - (cmptSum(lnLambda)/3)*vector::one);
+}
+
+
+Foam::symmTensor Foam::mechanicalLaws::vonMisesPlastic::kirchhoff
+(
+    const vector& tauDev,
+    const tensor& n,
+    const tensor& F
+) const
+{
+    return
+        tauDev.x()*sqr(n.x()) + tauDev.y()*sqr(n.y()) + tauDev.z()*sqr(n.z())
+      + kappa_*Foam::log(det(F))*symmTensor::I;
+}
+
+
+bool Foam::mechanicalLaws::vonMisesPlastic::returnMapping
+(
+    const tensor& F,
+    const symmTensor& CpInv,
+    const scalar epsilonP,
+    symmTensor& tau,
+    symmTensor& CpInvNew,
+    scalar& epsilonPNew
+) const
+{
+    vector lnLambda, tauDev;
+    tensor n;
+    elasticTrial(F, CpInv, lnLambda, tauDev, n);
+
+    const scalar tauEq = Foam::sqrt(1.5)*mag(tauDev);
+    const scalar f = tauEq - (yieldStress_ + hardeningModulus_*epsilonP);
+    const bool plastic = (f > 0);
+
+    if (plastic)
+    {
+        // Radial return along nu = sqrt(3/2) tau'/|tau'| = (3/2) tau'/tauEq
+        const scalar dgamma = f/(3*mu_ + hardeningModulus_);
+        const vector lnLambdaE(lnLambda - (1.5*dgamma/tauEq)*tauDev);
+
+        tauDev *= 1 - 3*mu_*dgamma/tauEq;
+        epsilonPNew = epsilonP + dgamma;
+
+        const symmTensor beNew
+        (
+            Foam::exp(2*lnLambdaE.x())*sqr(n.x())
+          + Foam::exp(2*lnLambdaE.y())*sqr(n.y())
+          + Foam::exp(2*lnLambdaE.z())*sqr(n.z())
+        );
+        // Isochoric to rounding; made unimodular so that rounding does not
+        // accumulate over many plastic steps
+        CpInvNew = transform(inv(F), beNew);
+        CpInvNew /= Foam::cbrt(det(CpInvNew));
+    }
+    else
+    {
+        CpInvNew = CpInv;
+        epsilonPNew = epsilonP;
+    }
+
+    tau = kirchhoff(tauDev, n, F);
+
+    return plastic;
+}
+
+
+Foam::tensor Foam::mechanicalLaws::vonMisesPlastic::P(const tensor& F) const
+{
+    vector lnLambda, tauDev;
+    tensor n;
+    elasticTrial(F, symmTensor::I, lnLambda, tauDev, n);
+
+    return kirchhoff(tauDev, n, F) & inv(F).T();
+}
+
+
+Foam::scalar Foam::mechanicalLaws::vonMisesPlastic::strainEnergy
+(
+    const tensor& F
+) const
+{
+    vector lnLambda, tauDev;
+    tensor n;
+    elasticTrial(F, symmTensor::I, lnLambda, tauDev, n);
+
+    return elasticEnergy(kirchhoff(tauDev, n, F), det(F));
+}
+
+
+void Foam::mechanicalLaws::vonMisesPlastic::stress
+(
+    const tensorField& F,
+    tensorField& P
+) const
+{
+    const symmTensorField& CpInv = CpInv_.primitiveField();
+    const scalarField& epsilonP = epsilonP_.primitiveField();
+    symmTensor tau, CpInvNew;
+    scalar epsilonPNew;
+
+    forAll(F, celli)
+    {
+        returnMapping
+        (
+            F[celli], CpInv[celli], epsilonP[celli], tau, CpInvNew, epsilonPNew
+        );
+        P[celli] = tau & inv(F[celli]).T();
+    }
+}
+
+
+void Foam::mechanicalLaws::vonMisesPlastic::correct
+(
+    const volTensorField& F,
+    volTensorField& P
+)
+{
+    // The first stage of a step return-maps the present state to F^n; the
+    // later stages return-map that state (the base) to their own F
+    const bool first = firstStage_;
+    const symmTensorField& CpInv =
+        first ? CpInv_.primitiveField() : CpInvBase_;
+    const scalarField& epsilonP =
+        first ? epsilonP_.primitiveField() : epsilonPBase_;
+
+    const tensorField& Fi = F.primitiveField();
+    tensorField& Pi = P.primitiveFieldRef();
+    symmTensor tau;
+
+    forAll(Fi, celli)
+    {
+        returnMapping
+        (
+            Fi[celli], CpInv[celli], epsilonP[celli],
+            tau, CpInvTrial_[celli], epsilonPTrial_[celli]
+        );
+        Pi[celli] = tau & inv(Fi[celli]).T();
+    }
+
+    if (first)
+    {
+        CpInvBase_ = CpInvTrial_;
+        epsilonPBase_ = epsilonPTrial_;
+        firstStage_ = false;
+    }
+
+    P.correctBoundaryConditions();
+}
+
+
+Foam::scalar Foam::mechanicalLaws::vonMisesPlastic::totalStrainEnergy
+(
+    const volTensorField& F
+) const
+{
+    const scalarField& V = mesh_.V();
+    const symmTensorField& CpInv = CpInv_.primitiveField();
+    const scalarField& epsilonP = epsilonP_.primitiveField();
+    symmTensor tau, CpInvNew;
+    scalar epsilonPNew;
+    scalar energy = 0;
+
+    forAll(V, celli)
+    {
+        returnMapping
+        (
+            F[celli], CpInv[celli], epsilonP[celli], tau, CpInvNew, epsilonPNew
+        );
+        energy += V[celli]*elasticEnergy(tau, det(F[celli]));
+    }
+
+    return returnReduce(energy, sumOp<scalar>());
+}
+
+
+void Foam::mechanicalLaws::vonMisesPlastic::storeOldTime()
+{
+    CpInv0_ = CpInv_.primitiveField();
+    epsilonP0_ = epsilonP_.primitiveField();
+    firstStage_ = true;
+}
+
+
+void Foam::mechanicalLaws::vonMisesPlastic::advanceStage(const scalar)
+{
+    // The state of the stage's return mapping, not alpha s^n + (1 - alpha)
+    // s~: see the class description
+    CpInv_.primitiveFieldRef() = CpInvTrial_;
+    epsilonP_.primitiveFieldRef() = epsilonPTrial_;
+    CpInv_.correctBoundaryConditions();
+    epsilonP_.correctBoundaryConditions();
+}
+
+
+void Foam::mechanicalLaws::vonMisesPlastic::commitStep
+(
+    const volTensorField& F
+)
+{
+    const tensorField& Fi = F.primitiveField();
+    symmTensorField& CpInv = CpInv_.primitiveFieldRef();
+    scalarField& epsilonP = epsilonP_.primitiveFieldRef();
+    symmTensor tau;
+
+    forAll(Fi, celli)
+    {
+        returnMapping
+        (
+            Fi[celli], CpInvBase_[celli], epsilonPBase_[celli],
+            tau, CpInv[celli], epsilonP[celli]
+        );
+    }
+
+    CpInv_.correctBoundaryConditions();
+    epsilonP_.correctBoundaryConditions();
+    firstStage_ = true;
+}
+
+
+void Foam::mechanicalLaws::vonMisesPlastic::restoreOldTime()
+{
+    CpInv_.primitiveFieldRef() = CpInv0_;
+    epsilonP_.primitiveFieldRef() = epsilonP0_;
+    CpInv_.correctBoundaryConditions();
+    epsilonP_.correctBoundaryConditions();
+    firstStage_ = true;
+}
+
+
+// ************************************************************************* //
