@@ -56,23 +56,32 @@ Foam::scalar Foam::stableTimeStep::readCFL(const dictionary& controls)
 }
 
 
-Foam::scalar Foam::stableTimeStep::calcHmin(const solidFaces& faces)
+Foam::scalarField Foam::stableTimeStep::calcCellLengths
+(
+    const solidFaces& faces
+)
 {
     const fvMesh& mesh = faces.mesh();
     const vectorField& Sf = mesh.faceAreas();
     const vectorField& Cf = mesh.faceCentres();
-    const vectorField& X = faces.mesh().C().primitiveField();
+    const vectorField& X = mesh.C().primitiveField();
 
     // The distance between neighbouring centres normal to their face:
     // the cell size for hexahedra, the inscribed scale for tetrahedra; at
-    // a boundary twice the distance of the centre from the face
-    scalar h = GREAT;
+    // a boundary twice the distance of the centre from the face.  A cell
+    // takes the smallest of its faces'
+    scalarField h(mesh.nCells(), GREAT);
 
     faces.forAllCoupled
     (
         [&](const solidFaces::coupledFace& face)
         {
-            h = min(h, mag((face.right.X - face.left.X) & face.N));
+            const scalar hf = mag((face.right.X - face.left.X) & face.N);
+            h[face.owner] = min(h[face.owner], hf);
+            if (face.neighbour >= 0)
+            {
+                h[face.neighbour] = min(h[face.neighbour], hf);
+            }
         }
     );
 
@@ -83,14 +92,14 @@ Foam::scalar Foam::stableTimeStep::calcHmin(const solidFaces& faces)
             forAll(patch.faceCells(), i)
             {
                 const label facei = patch.start() + i;
+                const label celli = patch.faceCells()[i];
                 const vector N(Sf[facei]/mag(Sf[facei]));
-                const vector r(Cf[facei] - X[patch.faceCells()[i]]);
-                h = min(h, 2*mag(r & N));
+                h[celli] = min(h[celli], 2*mag((Cf[facei] - X[celli]) & N));
             }
         }
     }
 
-    return returnReduce(h, minOp<scalar>());
+    return h;
 }
 
 
@@ -104,7 +113,8 @@ Foam::stableTimeStep::stableTimeStep
 )
 :
     CFL_(readCFL(controls)),
-    hMin_(calcHmin(faces)),
+    hCell_(calcCellLengths(faces)),
+    hMin_(gMin(hCell_)),
     Up_(law.Up())
 {}
 
@@ -113,19 +123,20 @@ Foam::stableTimeStep::stableTimeStep
 
 Foam::scalar Foam::stableTimeStep::deltaT(const volTensorField& F) const
 {
-    // The fastest wave, Up, in the current configuration: reference lengths
-    // shrink by the smallest principal stretch
-    scalar minStretch = GREAT;
+    // The fastest wave, Up, crosses each cell's length in the current
+    // configuration, which shrinks by the cell's smallest principal stretch
+    scalar crossing = GREAT;
 
     forAll(F, celli)
     {
         const tensor& Fc = F[celli];
-        minStretch = min(minStretch, minEigenValue(symm(Fc.T() & Fc)));
+        const scalar minStretch =
+            Foam::sqrt(max(minEigenValue(symm(Fc.T() & Fc)), scalar(0)));
+
+        crossing = min(crossing, hCell_[celli]*minStretch);
     }
 
-    minStretch = Foam::sqrt(max(returnReduce(minStretch, minOp<scalar>()), 0));
-
-    return CFL_*hMin_*minStretch/Up_;
+    return CFL_*returnReduce(crossing, minOp<scalar>())/Up_;
 }
 
 

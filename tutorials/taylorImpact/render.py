@@ -1,0 +1,23 @@
+#!/usr/bin/python3
+"""Pictures of the Taylor bar at the seed's times (figure 5: 10, 30, 50,
+80 us): pressure and equivalent plastic strain on the deformed quarter,
+seen from the side of its cut planes.  Run in the case by Allrun:
+
+    xvfb-run -a pvbatch render.py
+
+Writes pressure_<t>us.png and epsilonP_<t>us.png.
+"""
+
+# The touchfoam package: bin/python, on PYTHONPATH after etc/bashrc
+from touchfoam.figures import render_deformed
+
+render_deformed(
+    fields=["pressure", "epsilonP"],
+    titles={"pressure": "pressure [Pa]",
+            "epsilonP": "equivalent plastic strain"},
+    times=[1e-5, 3e-5, 5e-5, 8e-5],
+    time_unit="us",
+    view=(-1, 0.3, -1),                         # facing the cut planes
+    wall=((0, 0, 0), (0, 1, 0), 0.008),
+    size=(700, 1000),
+)
