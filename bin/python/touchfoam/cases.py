@@ -74,12 +74,47 @@ def initialise_rigid_motion(case, translation, omega):
 
 # -- run copies -------------------------------------------------------------
 
+def impact_mesh_options(tutorial, n):
+    """system/meshOptions entries of './Allrun -n n' for the impact
+    tutorials (their Allruns derive the block counts from n; blockMesh
+    takes integer counts only)."""
+    if tutorial in ("taylorImpact", "barRebound"):
+        # n across the radius: core, outer blocks, along the axis (L/R = 81/8)
+        nc = (2 * n + 1) // 3
+        return {"N": n, "Nc": nc, "Nr": n - nc, "Ny": (81 * n + 4) // 8}
+    if n % 4:
+        raise ValueError("%s: n must be a multiple of 4, got %d"
+                         % (tutorial, n))
+    if tutorial == "ringImpact":
+        # n around the ring, (Ro - Ri)/(pi (Ri + Ro)) = 1/22 of it across
+        return {"N": n, "Nq": n // 4, "Nr": max(1, (n + 11) // 22)}
+    # torusImpact: n around the tube, 7n layers around the axis
+    return {"N": n, "Nq": n // 4, "Nr": (n // 4 + 1) // 2, "Nt": 7 * n}
+
+
+#: Meshing after blockMesh, as in the impact tutorials' Allruns
+IMPACT_MESHING = {
+    "taylorImpact": [],
+    "barRebound": [["transformPoints", "-translate", "(0 0.004 0)"]],
+    "ringImpact": [["mirrorMesh", "-overwrite"],
+                   ["createPatch", "-overwrite"]],
+    "torusImpact": [["extrudeMesh"], ["createPatch", "-overwrite"]],
+}
+
+
 def mesh_case(case, tutorial, n=None):
     """Make the mesh of a copy the way the tutorial's Allrun does."""
     if tutorial == "unstructuredCube":
         args = [PYTHON, "makeMesh.py"] + ([] if n is None else ["-n", str(n)])
         run(args, case, "makeMesh")
         run(["gmshToFoam", "cube.msh"], case)
+        run(["checkMesh"], case)
+    elif tutorial in IMPACT_MESHING:
+        write_options(case, "system/meshOptions",
+                      {} if n is None else impact_mesh_options(tutorial, n))
+        run(["blockMesh"], case)
+        for cmd in IMPACT_MESHING[tutorial]:
+            run(cmd, case)
         run(["checkMesh"], case)
     else:
         write_options(case, "system/meshOptions",
@@ -91,8 +126,10 @@ def prepare(tutorial, dst, n=None, nu=None, touch=None, control=None,
             initialise=True):
     """A meshed and initialised copy of tutorials/<tutorial> at dst.
 
-    n        cells per side (swingingCube, spinningCube, unstructuredCube)
-             or across the column (twistingColumn: n x 6n x n)
+    n        cells per side (swingingCube, spinningCube, unstructuredCube),
+             across the column (twistingColumn: n x 6n x n), the bar's
+             radius (taylorImpact, barRebound), around the ring or the
+             tube (ringImpact, torusImpact): the Allruns' -n
     nu       Poisson's ratio override (constant/materialOptions)
     touch    {entry: value} for fvSolution's TOUCH dictionary
     control  {entry: value} for system/controlDict ('functions/solidMonitor/

@@ -78,8 +78,13 @@ Foam::tmp<Foam::Field<Type>> Foam::linearReconstruction::limiterFactors
     // Increments below round-off of the field's magnitude are no
     // increments: a cell at a bound of a component that is constant along a
     // face direction would otherwise take phi = 0 from a gradient of 1e-17
-    // (measured: a rigid rotation lost half its energy in a quarter turn)
-    const Type tolerance(roundOff_*gMax(cmptMag(Ui)));
+    // (measured: a rigid rotation lost half its energy in a quarter turn).
+    // The magnitude of the whole field, not of each component: a component
+    // that is zero but for round-off (p_x of a ring falling along y) had a
+    // tolerance of round-off itself, and its limiter followed the round-off
+    // of each decomposition (serial and parallel parted at first contact)
+    // and of each step sequence (the ring's L_z grew to 2e-7)
+    const Type tolerance(roundOff_*gMax(mag(Ui))*pTraits<Type>::one);
 
     // Smallest factor over the faces of a cell, per component
     auto limitFace = [&](const label c, const label facei)
