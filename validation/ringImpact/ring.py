@@ -1,0 +1,283 @@
+#!/usr/bin/python3
+"""Ring impact (BENCHMARKS.md section 5): linear and angular momentum on two
+meshes (issue 10, acceptance 3).
+
+    ./ring.py [--n 96 384] [--no-run]
+
+For each n, copies tutorials/ringImpact to runs/n<n>/ and runs its
+'./Allrun -n n' (n cells around the ring, round(n/22) across it: 96 is the
+default, 384 cells; 384 gives 6528; the seed's mesh study has 420 and
+6400), to the tutorial's 0.18 s, writes every 5 ms, one case at a time.
+The ring is a one-cell slab of thickness T = 0.01 m between symmetric
+planes (the tutorial's choice), centred on the origin, so the monitor's
+angular momentum (about the origin) is the one about the ring's initial
+centre.  From the solidMonitor (one row per step), per metre of thickness
+(divided by T, as the tutorial's plot.py):
+
+  p_y          p_y(0) from 0/lm (sum V p over the cells), the last p_y,
+               the first step with p_y > 0 (reversal: p_y(0) < 0 and the
+               last p_y > 0), and the contact interval (first and last
+               step with a face in contact);
+  p_x, p_z     max over the steps of |p_x|, |p_z| / |p_y(0)| (pass
+               < 1e-8);
+  L            max over the steps of |L_x|, |L_y|, |L_z| /
+               (|p_y(0)| R_outer), R_outer = 0.04 (pass < 1e-8), and when
+               the largest occurs;
+  energy       max over the steps of (E_n - E_n-1) / E0 (information).
+
+Writes results.json, results.md and momentum.png (matplotlib: p and L per
+metre on both meshes, as seed figure 9, and their normalised magnitudes
+on a log scale).  Wall times: touchFoam's ClockTime and the whole Allrun
+(mesh, pictures, the tutorial's own plots), one core, one run at a time.
+--no-run re-analyses runs/.
+"""
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
+
+from touchfoam import postprocess, run  # noqa: E402
+from touchfoam.figures import slab_thickness  # noqa: E402
+from touchfoam.mesh import PolyMesh  # noqa: E402
+from touchfoam.monitor import read_monitor  # noqa: E402
+
+TUTORIAL = "ringImpact"
+R_OUTER = 0.04          # outer radius [m]
+CONTACT = "contactFaces(wall)"
+LIMIT = 1e-8            # |p_x|, |p_z| / |p_y(0)| and |L_i| / (|p_y(0)| R)
+
+
+def case_dir(n):
+    return os.path.join(HERE, "runs", "n%d" % n)
+
+
+# -- runs ---------------------------------------------------------------------
+
+def run_case(n):
+    """Copy of the tutorial at runs/n<n>, its Allrun -n n; the wall time
+    goes to runs/n<n>/wallTime.json."""
+    case = case_dir(n)
+    print("running %s -n %d in %s" % (TUTORIAL, n, case), flush=True)
+    run.copy_case(run.tutorial_dir(TUTORIAL), case)
+    start = time.time()
+    error = None
+    try:
+        run.run(["./Allrun", "-n", str(n)], case, "Allrun",
+                env={"TOUCH_N": ""})
+    except run.RunError as err:
+        print(err, file=sys.stderr)
+        error = str(err).split("\n")[0]
+    wall = time.time() - start
+    with open(os.path.join(case, "wallTime.json"), "w") as f:
+        json.dump({"Allrun_s": wall, "error": error}, f, indent=1)
+    print("  done in %.0f s" % wall, flush=True)
+
+
+# -- measurements -------------------------------------------------------------
+
+def log_steps_and_clock(case):
+    """(number of steps, touchFoam ClockTime [s]) from log.touchFoam."""
+    steps, clock = 0, None
+    with open(os.path.join(case, "log.touchFoam"), errors="replace") as f:
+        for line in f:
+            if line.startswith("Time = "):
+                steps += 1
+            elif line.startswith("ExecutionTime"):
+                clock = float(line.split("ClockTime =")[1].split()[0])
+    return steps, clock
+
+
+def measure(case):
+    mesh = PolyMesh(case)
+    m = read_monitor(case)
+    T = slab_thickness(case, axis=2)
+    t, faces = m["Time"], m[CONTACT]
+    p, L = m["p"] / T, m["L"] / T
+    p0, L0 = (v / T for v in postprocess.initial_momenta(case))
+    py0 = abs(p0[1])
+    E0 = postprocess.initial_energy(case)
+    dE = np.diff(np.concatenate([[E0], m["totalEnergy"]])) / E0
+    on = np.nonzero(faces > 0)[0]
+    up = np.nonzero(p[:, 1] > 0)[0]
+    Lrel = np.abs(L).max(axis=0) / (py0 * R_OUTER)
+    steps, clock = log_steps_and_clock(case)
+    with open(os.path.join(case, "wallTime.json")) as f:
+        wall = json.load(f)
+    out = {
+        "cells": mesh.n_cells, "thickness": T, "steps": steps,
+        "monitorRows": len(t), "endTime": float(t[-1]),
+        "touchFoamClockTime_s": clock, "AllrunWallTime_s": wall["Allrun_s"],
+        "runError": wall["error"],
+        "py0_perMetre": float(p0[1]), "L0_perMetre": L0.tolist(),
+        "pyEnd_py0": float(p[-1, 1] / py0),
+        "pyMax_py0": float(p[:, 1].max() / py0),
+        "pyFirstPositive": float(t[up[0]]) if len(up) else None,
+        "pyReverses": bool(p0[1] < 0 and p[-1, 1] > 0),
+        "contactStart": float(t[on[0]]) if len(on) else None,
+        "contactEnd": float(t[on[-1]]) if len(on) else None,
+        "maxFacesInContact": int(faces.max()),
+        "maxPx_py0": float(np.abs(p[:, 0]).max() / py0),
+        "maxPz_py0": float(np.abs(p[:, 2]).max() / py0),
+        "maxL_py0R": Lrel.tolist(),
+        "maxLTime": [float(t[np.abs(L[:, i]).argmax()]) for i in range(3)],
+        "maxEnergyChangePerStep_E0": float(dE.max()),
+        "endEnergy_E0": float(m["totalEnergy"][-1] / E0),
+    }
+    out["linearPass"] = bool(max(out["maxPx_py0"], out["maxPz_py0"]) < LIMIT)
+    out["angularPass"] = bool(Lrel.max() < LIMIT)
+    # The histories for the plot (not in results.json: every step)
+    out["_history"] = (t, p, L, py0)
+    return out
+
+
+# -- output -------------------------------------------------------------------
+
+def yes(flag):
+    return {True: "yes", False: "NO", None: "-"}[flag]
+
+
+def write_markdown(out, path):
+    ms = 1e3
+    lines = [
+        "# Ring impact on two meshes: linear and angular momentum", "",
+        "Generated by ring.py (`./Allrun`) on %s, build %s.  Rubber ring "
+        "Ri = 0.03, Ro = 0.04 m, one-cell slab T = %.3g m between symmetric "
+        "planes (plane strain), neo-Hookean, v0 = -0.59 m/s, to %.3g s "
+        "(tutorial settings, writes every 5 ms).  Momenta per metre of "
+        "thickness; p_y(0) = sum V p of 0/lm; maxima over every step of "
+        "the solidMonitor; L about the origin, the ring's initial centre; "
+        "bound %.0e for p_x, p_z (/|p_y(0)|) and every L component "
+        "(/|p_y(0)| R_outer, R_outer = %.2f m).  Wall: touchFoam "
+        "ClockTime / whole Allrun (one core, shared machine)." % (
+            out["date"], out["build"], out["thickness"], out["endTime"],
+            LIMIT, R_OUTER), "",
+        "| -n | cells | steps | p_y(0) [kg/s per m] | contact [ms] "
+        "| p_y > 0 from [ms] | p_y end / |p_y(0)| | reverses "
+        "| max |p_x| | max |p_z| | max |L_x| | max |L_y| | max |L_z| "
+        "| pass p / L | max dE/E0 per step | wall [s] |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+    ]
+    for n, r in out["meshes"].items():
+        lines.append(
+            "| %s | %d | %d | %.5g | %.2f - %.2f | %.2f | %.4f | %s | %.1e "
+            "| %.1e | %.1e | %.1e | %.1e | %s / %s | %.1e | %.0f / %.0f |%s"
+            % (n, r["cells"], r["steps"], r["py0_perMetre"],
+               ms * r["contactStart"], ms * r["contactEnd"],
+               ms * r["pyFirstPositive"], r["pyEnd_py0"],
+               yes(r["pyReverses"]), r["maxPx_py0"], r["maxPz_py0"],
+               r["maxL_py0R"][0], r["maxL_py0R"][1], r["maxL_py0R"][2],
+               yes(r["linearPass"]), yes(r["angularPass"]),
+               r["maxEnergyChangePerStep_E0"], r["touchFoamClockTime_s"],
+               r["AllrunWallTime_s"],
+               " run failed: %s" % r["runError"] if r["runError"] else ""))
+    lines += ["", "p_x, p_z relative to |p_y(0)|; L relative to |p_y(0)| "
+              "R_outer; the largest |L_z| at %s ms."
+              % ", ".join("%.2f (-n %s)" % (ms * r["maxLTime"][2], n)
+                          for n, r in out["meshes"].items())]
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def plot(meshes, path):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib not available: %s skipped" % os.path.basename(path))
+        return
+    fig, axes = plt.subplots(3, 1, sharex=True, figsize=(7, 9))
+    styles = ["--", "-"]
+    for (n, r), ls in zip(meshes.items(), styles):
+        t, p, L, py0 = r["_history"]
+        label = "%d cells" % r["cells"]
+        for i, c in enumerate("xyz"):
+            axes[0].plot(1e3 * t, p[:, i], ls, color="C%d" % i, lw=1.2,
+                         label="p_%s, %s" % (c, label))
+            axes[1].plot(1e3 * t, L[:, i], ls, color="C%d" % i, lw=1.2,
+                         label="L_%s, %s" % (c, label))
+        tiny = 1e-300           # exact zeros on the log scale
+        for i, (y, name) in enumerate((
+                (np.abs(p[:, 0]) / py0, "|p_x| / |p_y(0)|"),
+                (np.abs(p[:, 2]) / py0, "|p_z| / |p_y(0)|"),
+                (np.linalg.norm(L, axis=1) / (py0 * R_OUTER),
+                 "|L| / (|p_y(0)| R_outer)"))):
+            axes[2].semilogy(1e3 * t, np.maximum(y, tiny), ls,
+                             color="C%d" % (i + 3), lw=1.0,
+                             label="%s, %s" % (name, label))
+    axes[2].axhline(LIMIT, color="k", lw=0.8, ls=":", label="bound 1e-8")
+    axes[2].set_ylim(1e-20, 1e-6)
+    axes[0].set_ylabel("linear momentum [kg/s per m]")
+    axes[1].set_ylabel("angular momentum\nabout the initial centre "
+                       "[kg m/s per m]")
+    axes[2].set_ylabel("relative magnitude")
+    axes[2].set_xlabel("time [ms]")
+    for ax in axes:
+        ax.grid(True, lw=0.3)
+        ax.legend(fontsize=7, ncol=2)
+    fig.suptitle("Ring impact: momenta per metre of thickness")
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    print("wrote %s" % path)
+
+
+def build_label():
+    """'<HEAD> (libTOUCH.so of <date>)': the commit checked out and when the
+    library was built."""
+    head = subprocess.run(["git", "rev-parse", "--short", "HEAD"],
+                          cwd=run.project_dir(), capture_output=True,
+                          text=True).stdout.strip() or "unknown"
+    for root, _, names in os.walk(os.path.join(run.project_dir(),
+                                               "platforms")):
+        if "libTOUCH.so" in names:
+            stamp = os.path.getmtime(os.path.join(root, "libTOUCH.so"))
+            return "%s (libTOUCH.so of %s)" % (head, time.strftime(
+                "%Y-%m-%d %H:%M", time.localtime(stamp)))
+    return head
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--n", type=int, nargs=2, default=[96, 384],
+                        help="cells around the ring (multiples of 4)")
+    parser.add_argument("--no-run", action="store_true",
+                        help="only post-process the existing runs")
+    args = parser.parse_args()
+    args.n = sorted(args.n)
+    try:
+        if not args.no_run:
+            run.check_openfoam()
+            for n in args.n:
+                run_case(n)
+        meshes = {str(n): measure(case_dir(n)) for n in args.n}
+        first = next(iter(meshes.values()))
+        out = {"date": time.strftime("%Y-%m-%d", time.localtime(
+                   os.path.getmtime(os.path.join(case_dir(args.n[-1]),
+                                                 "wallTime.json")))),
+               "build": build_label(), "R_outer": R_OUTER, "limit": LIMIT,
+               "thickness": first["thickness"], "endTime": first["endTime"],
+               "meshes": {n: {k: v for k, v in r.items()
+                              if not k.startswith("_")}
+                          for n, r in meshes.items()}}
+    except (run.RunError, OSError, ValueError, KeyError) as err:
+        print("ring: %s" % err, file=sys.stderr)
+        return 1
+    with open(os.path.join(HERE, "results.json"), "w") as f:
+        json.dump(out, f, indent=1)
+    write_markdown(out, os.path.join(HERE, "results.md"))
+    plot(meshes, os.path.join(HERE, "momentum.png"))
+    with open(os.path.join(HERE, "results.md")) as f:
+        print(f.read())
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
