@@ -1,0 +1,660 @@
+#!/usr/bin/python3
+"""Taylor impact (BENCHMARKS.md section 3): mesh convergence against the
+literature and against CalculiX.
+
+    ./taylor.py [--n 3 6 9] [--calculix 4,4,34 6,6,50] [--no-calculix]
+                [--no-run]
+
+For each n, copies tutorials/taylorImpact to runs/n<n>/ and runs its
+'./Allrun -n n' (n cells across the radius; 3, 6, 9 give 240, 1952 and
+6552 cells; CFL 0.3 as in the tutorial), one case at a time, then reads
+the 80 us time folder:
+
+  length       max current y of the mesh points (the wall is y = 0);
+  foot radius  max current sqrt(x^2 + z^2) of the points of the wall
+               patch (reference y = 0);
+  peak strain  max cell epsilonP;
+  steps        'Time =' lines of log.touchFoam; wall time: touchFoam's
+               ClockTime (and the whole Allrun, pictures included).
+
+Each is compared with the literature range (LITERATURE below) and across
+the meshes: the differences between successive meshes, whether they
+shrink, whether the finest mesh is nearer the range than the one before,
+and the limit of v = v0 + a h^p through the three (when 0.5 <= p <= 4).
+The same quantities are kept for every written time, with the range of
+J; run health from the solidMonitor: growth of the total energy (it can
+only fall) and the first step that raised it by more than 1e-6 E_0, and
+the contact-set changes and largest wall force after 40 us.
+
+Checker-board index of a cell field q (pressure, epsilonP) at 80 us, on
+the reference mesh: for every cell e, r_e = q_e - the mean of q over the
+cells that share a face with e, and
+
+    C = RMS_e(r) / (2 RMS_e(q - mean_e q)),
+
+over the interior cells (no boundary face) and over all cells (boundary
+cells have only their face neighbours, so the pictures' surface cells
+count too).  C = 0 for a field that is linear on a uniform mesh, C = 1
+for a perfect +1/-1 checker-board (r = +-2).  The same index of three
+reference fields on the same mesh is given to judge the numbers: a
+linear field of the reference coordinates (C_smooth), the best +1/-1
+two-colouring of the cells (C_checker; the O-grid has three cells round
+the block corner, so a few faces cannot alternate) and independent
+normal random values (C_noise, about 0.54: rough, but not alternating).
+A grid-scale mode keeps its C under refinement; a resolved field's C
+falls with h.
+
+CalculiX: ../shared/peers/calculix/run_B.sh (C3D8R, DTMAX = 6e-9 s as its
+README says, one thread) for each N,M,NY of --calculix, in
+runs/calculix/; final length (max current y of the nodes), radius of the
+impact face and peak PEEQ (integration points) from its post_taylor.py,
+wall time of ccx from its JOB.time.  The peer folder can be moved with
+$CALCULIX_PEER.
+
+Writes results.json, results.md and taylor.png (when matplotlib is
+available).  --no-run re-analyses runs/ (wall times are stored there).
+Exit status 1 when acceptance line 1 of issue 10 fails on the finest
+mesh (ranges, convergence toward them, C <= 0.2 over all cells, energy
+growth below 1e-3 E_0).
+"""
+
+import argparse
+import json
+import math
+import os
+import shutil
+import sys
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
+
+from touchfoam import run  # noqa: E402
+from touchfoam.foamfile import read_field  # noqa: E402
+from touchfoam.mesh import PolyMesh  # noqa: E402
+from touchfoam.monitor import read_monitor  # noqa: E402
+
+T_END = 8e-5
+TUTORIAL = "taylorImpact"
+# BENCHMARKS.md 3: Camacho & Ortiz 1997 compilation (Kamoulakos 1990,
+# Zhu & Cescotto 1995), at 80 us
+LITERATURE = {
+    "length_mm": (21.26, 21.49),
+    "footRadius_mm": (6.89, 7.24),
+    "peakPlasticStrain": (2.5, 3.25),
+}
+QUANTITIES = {
+    "length_mm": "final length [mm]",
+    "footRadius_mm": "foot radius [mm]",
+    "peakPlasticStrain": "peak equivalent plastic strain",
+}
+CHECKER_FIELDS = ("pressure", "epsilonP")
+CHECKER_FREE = 0.2      # C above this (all cells): not free of checker-board
+ORDER_RANGE = (0.5, 4.0)    # observed orders believed for extrapolation
+ONSET = 1e-6            # a step raising the total energy by this x E_0
+CCX_DTMAX = "6e-9"      # peer README B: CalculiX's own increment diverges
+CCX_FREQ = "667"        # output every ~4 us, as the peer's baselines
+
+
+def peer_dir():
+    return os.environ.get("CALCULIX_PEER", os.path.join(
+        run.project_dir(), "..", "shared", "peers", "calculix"))
+
+
+def case_dir(n):
+    return os.path.join(HERE, "runs", "n%d" % n)
+
+
+def ccx_dir():
+    return os.path.join(HERE, "runs", "calculix")
+
+
+def ccx_job(mesh):
+    return "B_C3D8R_%dx%dx%d_dt%s" % (tuple(mesh) + (CCX_DTMAX,))
+
+
+# -- runs ---------------------------------------------------------------------
+
+def run_touch(n):
+    """Copy of the tutorial at runs/n<n>, its Allrun -n n; the wall times
+    go to runs/n<n>/wallTime.json.  Returns an error message or None."""
+    case = case_dir(n)
+    print("running %s -n %d in %s" % (TUTORIAL, n, case), flush=True)
+    run.copy_case(run.tutorial_dir(TUTORIAL), case)
+    env = {"TOUCH_N": ""}
+    start = time.time()
+    error = None
+    try:
+        run.run(["./Allrun", "-n", str(n)], case, "Allrun", env=env)
+    except run.RunError as err:
+        print(err, file=sys.stderr)
+        error = str(err).split("\n")[0]
+    wall = time.time() - start
+    with open(os.path.join(case, "wallTime.json"), "w") as f:
+        json.dump({"Allrun_s": wall, "error": error}, f, indent=1)
+    print("  done in %.0f s" % wall, flush=True)
+    return error
+
+
+def run_calculix(mesh):
+    """run_B.sh of the peer for mesh (N, M, NY) in runs/calculix/B."""
+    script = os.path.join(peer_dir(), "run_B.sh")
+    if not os.path.exists(script):
+        raise run.RunError("no CalculiX peer at %s (set $CALCULIX_PEER)"
+                           % peer_dir())
+    if shutil.which("ccx") is None:
+        raise run.RunError("ccx not installed: bin/touchSetup "
+                           "--with-calculix")
+    job = ccx_job(mesh)
+    os.makedirs(ccx_dir(), exist_ok=True)
+    print("running CalculiX %s in %s" % (job, ccx_dir()), flush=True)
+    start = time.time()
+    run.run([script, job] + [str(m) for m in mesh] + ["C3D8R", "80"],
+            ccx_dir(), "run_B." + job,
+            env={"WORK": ccx_dir(), "DTMAX": CCX_DTMAX, "FREQ": CCX_FREQ,
+                 "OMP_NUM_THREADS": "1"})
+    print("  done in %.0f s" % (time.time() - start), flush=True)
+
+
+# -- our measurements ---------------------------------------------------------
+
+def log_steps_and_clock(case):
+    """(number of steps, touchFoam ClockTime [s]) from log.touchFoam."""
+    steps, clock = 0, None
+    with open(os.path.join(case, "log.touchFoam"), errors="replace") as f:
+        for line in f:
+            if line.startswith("Time = "):
+                steps += 1
+            elif line.startswith("ExecutionTime"):
+                clock = float(line.split("ClockTime =")[1].split()[0])
+    return steps, clock
+
+
+def face_neighbours(mesh):
+    """Owner and neighbour of the internal faces, and the mask of the
+    cells with no boundary face."""
+    nint = mesh.n_internal_faces
+    boundary = np.zeros(mesh.n_cells, bool)
+    boundary[mesh.owner[nint:]] = True
+    return mesh.owner[:nint], mesh.neighbour, ~boundary
+
+
+def checker_index(q, own, nbr, cells):
+    """C = RMS(q - mean_nb q) / (2 RMS(q - mean q)) over the cells mask."""
+    n = len(q)
+    count = np.bincount(own, minlength=n) + np.bincount(nbr, minlength=n)
+    total = (np.bincount(own, weights=q[nbr], minlength=n)
+             + np.bincount(nbr, weights=q[own], minlength=n))
+    r = q - total / np.maximum(count, 1)
+    spread = q[cells] - q[cells].mean()
+    denom = 2.0 * math.sqrt(np.mean(spread ** 2))
+    return float(math.sqrt(np.mean(r[cells] ** 2)) / denom) if denom > 0 \
+        else 0.0
+
+
+def two_colouring(n, own, nbr):
+    """+1/-1 per cell by breadth-first search over the face graph; the
+    fraction of internal faces whose two cells got the same colour."""
+    adj = [[] for _ in range(n)]
+    for a, b in zip(own, nbr):
+        adj[a].append(b)
+        adj[b].append(a)
+    colour = np.zeros(n)
+    for seed in range(n):
+        if colour[seed]:
+            continue
+        colour[seed] = 1.0
+        queue = [seed]
+        while queue:
+            nxt = []
+            for c in queue:
+                for d in adj[c]:
+                    if not colour[d]:
+                        colour[d] = -colour[c]
+                        nxt.append(d)
+            queue = nxt
+    same = float(np.mean(colour[own] == colour[nbr]))
+    return colour, same
+
+
+class Cells:
+    """The reference mesh of a case with what the indices need."""
+
+    def __init__(self, case):
+        self.mesh = PolyMesh(case)
+        self.foot = self.mesh.patch_points("wall")
+        self.own, self.nbr, self.interior = face_neighbours(self.mesh)
+        self.every = np.ones(self.mesh.n_cells, bool)
+
+    def checker(self, q):
+        """{'allCells': C, 'interior': C} of the cell field q."""
+        return {"allCells": checker_index(q, self.own, self.nbr, self.every),
+                "interior": checker_index(q, self.own, self.nbr,
+                                          self.interior)}
+
+    def read(self, folder, name, points=False):
+        n = len(self.mesh.points) if points else self.mesh.n_cells
+        return read_field(os.path.join(folder, name)).internal(n)
+
+
+def at_time(cells, folder):
+    """Length, foot radius, peak strain, J range and the checker-board
+    indices of pressure and epsilonP at one written time."""
+    m = cells.mesh
+    x = m.points + cells.read(folder, "pointU", points=True)
+    eps = cells.read(folder, "epsilonP")
+    J = cells.read(folder, "J")
+    return {
+        "time": float(os.path.basename(folder)),
+        "length_mm": 1e3 * float(x[:, 1].max()),
+        "footRadius_mm": 1e3 * float(np.hypot(x[cells.foot, 0],
+                                              x[cells.foot, 2]).max()),
+        "peakPlasticStrain": float(eps.max()),
+        "peakPlasticStrainCell": int(eps.argmax()),
+        "peakPlasticStrainAt_mm": (1e3 * m.cell_centres[eps.argmax()])
+        .tolist(),
+        "minJ": float(J.min()),
+        "maxJ": float(J.max()),
+        "checkerBoard": {f: cells.checker(cells.read(folder, f))
+                         for f in CHECKER_FIELDS},
+    }
+
+
+def run_health(case):
+    """From the monitor: growth of the total energy (plasticity and a
+    frictionless wall only dissipate), max_n (E_n - min_{m<=n} E_m) / E_0,
+    and the first time a step raised E by more than ONSET E_0; the steps
+    at which the number of wall faces in contact changed and the largest
+    wall force, in the second half of the run (the bar is slowing down,
+    the foot stays on the wall)."""
+    mon = read_monitor(case)
+    t, E = mon["Time"], mon["totalEnergy"]
+    growth = float(np.max(E - np.minimum.accumulate(E)) / E[0])
+    jumps = np.nonzero(np.diff(E) > ONSET * E[0])[0]
+    late = t >= 0.5 * T_END
+    faces = mon["contactFaces(wall)"][late]
+    return {"initialEnergy_J": float(E[0]),
+            "maxGrowthRelative": growth,
+            "maxStepIncreaseRelative": float(np.max(np.diff(E)) / E[0]),
+            "onsetTime": float(t[jumps[0] + 1]) if len(jumps) else None,
+            "contactChangesSecondHalf": int(np.sum(np.diff(faces) != 0)),
+            "maxWallForceSecondHalf_N":
+            float(mon["wallForce(wall)"][late].max())}
+
+
+def measure(case):
+    cells = Cells(case)
+    mesh = cells.mesh
+    steps, clock = log_steps_and_clock(case)
+    with open(os.path.join(case, "wallTime.json")) as f:
+        wall = json.load(f)
+    times = run.time_dirs(case)
+    history = [at_time(cells, os.path.join(case, times[t]))
+               for t in sorted(times) if t > 0]
+    final = history[-1]
+    if abs(final["time"] - T_END) > 1e-9 * T_END:
+        raise run.RunError("%s: last time %g, not %g"
+                           % (case, final["time"], T_END))
+    out = {"cells": mesh.n_cells, "steps": steps,
+           "touchFoamClockTime_s": clock,
+           "AllrunWallTime_s": wall["Allrun_s"], "runError": wall["error"]}
+    out.update(final)
+    out["energy"] = run_health(case)
+    out["history"] = history
+    # The reference fields, to judge C
+    colour, same = two_colouring(mesh.n_cells, cells.own, cells.nbr)
+    rng = np.random.default_rng(1)
+    refs = {"smooth": mesh.cell_centres @ np.array([1.0, 2.0, 3.0]),
+            "noise": rng.standard_normal(mesh.n_cells),
+            "checker": colour}
+    out["checkerBoard"].update({k: cells.checker(q) for k, q in refs.items()})
+    out["checkerSameColourFaces"] = same
+    out["interiorCells"] = int(cells.interior.sum())
+    return out
+
+
+def richardson(n, v):
+    """Observed order p and limit of v(h) = v0 + a h^p, h = 1/n, from the
+    last three meshes; None when the differences do not shrink
+    monotonically."""
+    if len(v) < 3:
+        return None
+    h = [1.0 / x for x in n[-3:]]
+    d1, d2 = v[-2] - v[-3], v[-1] - v[-2]
+    if d1 * d2 <= 0 or abs(d2) >= abs(d1):
+        return None
+
+    def excess(p):      # (h1^p - h2^p) / (h2^p - h3^p) - d1/d2
+        return (h[0] ** p - h[1] ** p) / (h[1] ** p - h[2] ** p) - d1 / d2
+
+    lo, hi = 0.05, 8.0
+    if excess(lo) * excess(hi) > 0:
+        return None
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        if excess(lo) * excess(mid) <= 0:
+            hi = mid
+        else:
+            lo = mid
+    p = 0.5 * (lo + hi)
+    a = d2 / (h[2] ** p - h[1] ** p)
+    limit = v[-1] - a * h[2] ** p
+    ok = ORDER_RANGE[0] <= p <= ORDER_RANGE[1]
+    return {"order": p, "limit": limit if ok else None,
+            "limitOutsideOrderRange": None if ok else limit}
+
+
+def convergence(n, values):
+    """Differences of successive meshes, whether they shrink, the
+    direction, and whether the finest is nearer the range than the one
+    before (distance 0 inside the range)."""
+    out = {}
+    for key, (lo, hi) in LITERATURE.items():
+        v = [r[key] for r in values]
+        d = [b - a for a, b in zip(v, v[1:])]
+        dist = [max(lo - x, x - hi, 0.0) for x in v]
+        out[key] = {
+            "values": v,
+            "differences": d,
+            "shrinking": bool(all(abs(b) < abs(a) for a, b in zip(d, d[1:])))
+            if len(d) >= 2 else None,
+            "monotone": bool(all(a * b > 0 for a, b in zip(d, d[1:])))
+            if len(d) >= 2 else None,
+            "distanceToRange": dist,
+            "finestInRange": bool(lo <= v[-1] <= hi),
+            "approaching": bool(dist[-1] <= dist[-2]) if len(v) >= 2
+            else None,
+            "richardson": richardson(n, v),
+        }
+    return out
+
+
+# -- CalculiX -----------------------------------------------------------------
+
+def calculix_result(mesh):
+    base = os.path.join(ccx_dir(), "B", ccx_job(mesh))
+    with open(base + ".json") as f:
+        res = json.load(f)
+    with open(base + ".time") as f:
+        timing = f.read().split()
+    N, M, NY = mesh
+    return {
+        "mesh": "%d/%d/%d" % (N, M, NY),
+        "job": ccx_job(mesh),
+        "elements": (N * N + 2 * N * M) * NY,
+        "increments": res["increments_last_step_frd"],
+        "time": res["t_final"],
+        "ccxWallTime_s": float(timing[0]),
+        "length_mm": res["length_max_y_mm"],
+        "lengthAxis_mm": res["length_final_mm"],
+        "footRadius_mm": res["radius_impact_mm"],
+        "peakPlasticStrain": res["peeq_max_ip"],
+        "peakPlasticStrainNodal": res["peeq_max_nodal"],
+    }
+
+
+# -- output -------------------------------------------------------------------
+
+def write_markdown(out, path):
+    lit = LITERATURE
+    rng = "%.2f-%.2f | %.2f-%.2f | %.2f-%.2f" % (
+        lit["length_mm"] + lit["footRadius_mm"] + lit["peakPlasticStrain"])
+    meshes = out["meshes"]
+    lines = [
+        "# Taylor impact at 80 us: three meshes, literature, CalculiX", "",
+        "Generated by taylor.py (`./Allrun`).  Copper bar, quarter model, "
+        "vonMisesPlastic, CFL 0.3, touchFoam serial.  Length: max current "
+        "y of the points; foot radius: max current radius of the wall "
+        "patch points; peak strain: max cell epsilonP (CalculiX: max PEEQ "
+        "at the integration points).  Steps: touchFoam time steps / "
+        "CalculiX increments.  Wall time: touchFoam's ClockTime / ccx's "
+        "wall time, one core each, one run at a time, measured in the "
+        "run of %s." % out["date"], "",
+        "C = RMS(q_e - mean_nb q) / (2 RMS(q - mean q)), over all cells / "
+        "over the interior cells (0: linear field, 1: +1/-1 "
+        "checker-board; see README.md).  References on each mesh: "
+        "C_smooth (linear field), C_noise (independent random values), "
+        "C_checker (two-colouring of the cells).", "",
+        "| mesh | cells | steps | wall [s] | length [mm] | foot radius [mm] "
+        "| peak strain | C pressure | C epsilonP | C_smooth | C_noise "
+        "| C_checker |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|",
+    ]
+
+    def pair(r, k):
+        cb = r["checkerBoard"][k]
+        return "%.3f / %.3f" % (cb["allCells"], cb["interior"])
+
+    for n, r in meshes.items():
+        lines.append(
+            "| touchFoam -n %s | %d | %d | %.0f | %.3f | %.3f | %.3f "
+            "| %s | %s | %s | %s | %s |%s" % (
+                n, r["cells"], r["steps"], r["touchFoamClockTime_s"],
+                r["length_mm"], r["footRadius_mm"], r["peakPlasticStrain"],
+                pair(r, "pressure"), pair(r, "epsilonP"), pair(r, "smooth"),
+                pair(r, "noise"), pair(r, "checker"),
+                " run failed: %s" % r["runError"] if r["runError"] else ""))
+    for c in out.get("calculix", []):
+        lines.append(
+            "| CalculiX C3D8R %s | %d | %d | %.0f | %.3f | %.3f | %.3f "
+            "| - | - | - | - | - |" % (
+                c["mesh"], c["elements"], c["increments"], c["ccxWallTime_s"],
+                c["length_mm"], c["footRadius_mm"], c["peakPlasticStrain"]))
+    lines.append("| literature (BENCHMARKS.md 3) | | | | %s | | | | | |"
+                 % rng)
+
+    yn = {True: "yes", False: "NO", None: "-"}
+    lines += ["", "Convergence (successive differences, coarse to fine; "
+              "extrapolated: v0 of v = v0 + a h^p, h = 1/n, through the "
+              "last three meshes when their differences shrink "
+              "monotonically, given when %g <= p <= %g):" % ORDER_RANGE, "",
+              "| quantity | values | differences | shrinking | monotone "
+              "| finest in range | finest nearer the range "
+              "| extrapolated (order) |",
+              "|---|---|---|---|---|---|---|---|"]
+    for key, c in out["convergence"].items():
+        rich = c["richardson"]
+        if rich is None:
+            extra = "-"
+        elif rich["limit"] is None:
+            extra = "- (%.2f: not asymptotic)" % rich["order"]
+        else:
+            extra = "%.3f (%.2f)" % (rich["limit"], rich["order"])
+        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            QUANTITIES[key], " ".join("%.3f" % v for v in c["values"]),
+            " ".join("%+.3f" % d for d in c["differences"]),
+            yn[c["shrinking"]], yn[c["monotone"]], yn[c["finestInRange"]],
+            yn[c["approaching"]], extra))
+
+    lines += ["", "Run health: growth of the total energy (plasticity and "
+              "the frictionless wall only dissipate) max_n (E_n - "
+              "min_{m<=n} E_m) / E_0, the first time a step raised it by "
+              "more than %g E_0, the range of J at 80 us, and from 40 us "
+              "on the steps at which the number of wall faces in contact "
+              "changed and the largest wall force:" % ONSET, "",
+              "| mesh | energy growth / E_0 | onset [us] | J at 80 us "
+              "| contact changes | max wall force [N] |",
+              "|---|---|---|---|---|---|"]
+    for n, r in meshes.items():
+        e = r["energy"]
+        lines.append("| -n %s | %.1e | %s | %.3f - %.3f | %d | %.0f |" % (
+            n, e["maxGrowthRelative"], "-" if e["onsetTime"] is None
+            else "%.2f" % (1e6 * e["onsetTime"]), r["minJ"], r["maxJ"],
+            e["contactChangesSecondHalf"], e["maxWallForceSecondHalf_N"]))
+
+    lines += ["", "At the written times: peak epsilonP, C pressure and C "
+              "epsilonP over all cells, min J:", "",
+              "| t [us] | " + " | ".join("-n %s" % n for n in meshes) + " |",
+              "|---|" + "---|" * len(meshes)]
+    for i, h in enumerate(next(iter(meshes.values()))["history"]):
+        cols = []
+        for r in meshes.values():
+            if i >= len(r["history"]):
+                cols.append("-")
+                continue
+            q = r["history"][i]
+            cb = q["checkerBoard"]
+            cols.append("%.3f, %.3f, %.3f, %.3f" % (
+                q["peakPlasticStrain"], cb["pressure"]["allCells"],
+                cb["epsilonP"]["allCells"], q["minJ"]))
+        lines.append("| %g | %s |" % (1e6 * h["time"], " | ".join(cols)))
+
+    acc = out["acceptance"]
+    lines += ["", "Acceptance 1 of issue 10 on the finest mesh (-n %s): "
+              "in range: length %s, foot radius %s, peak strain %s; "
+              "converging toward the range (differences shrinking, finest "
+              "nearer): %s; free of checker-boards (C <= %g over all "
+              "cells): pressure %s, epsilonP %s." % (
+                  acc["mesh"], yn[acc["length_mm"]],
+                  yn[acc["footRadius_mm"]], yn[acc["peakPlasticStrain"]],
+                  ", ".join("%s %s" % (QUANTITIES[k].split(" [")[0],
+                                       yn[v])
+                            for k, v in acc["converging"].items()),
+                  CHECKER_FREE, yn[acc["checkerFree"]["pressure"]],
+                  yn[acc["checkerFree"]["epsilonP"]]), ""]
+    lines.append("Faces of C_checker's two-colouring whose cells have the "
+                 "same colour, and interior cells: " + "; ".join(
+                     "-n %s: %.1f %%, %d of %d cells" % (
+                         n, 100 * r["checkerSameColourFaces"],
+                         r["interiorCells"], r["cells"])
+                     for n, r in meshes.items()) + ".")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def acceptance(out):
+    """Acceptance line 1 of issue 10 on the finest mesh."""
+    n, fine = list(out["meshes"].items())[-1]
+    conv = out["convergence"]
+    res = {"mesh": n}
+    for key, (lo, hi) in LITERATURE.items():
+        res[key] = bool(lo <= fine[key] <= hi)
+    res["converging"] = {k: bool(c["shrinking"] and c["approaching"])
+                         for k, c in conv.items()}
+    res["checkerFree"] = {
+        f: bool(fine["checkerBoard"][f]["allCells"] <= CHECKER_FREE)
+        for f in CHECKER_FIELDS}
+    res["energyGrowthBelow1e-3"] = bool(
+        fine["energy"]["maxGrowthRelative"] < 1e-3)
+    res["pass"] = bool(all(res[k] for k in LITERATURE)
+                       and all(res["converging"].values())
+                       and all(res["checkerFree"].values())
+                       and res["energyGrowthBelow1e-3"])
+    return res
+
+
+def plot(out, path):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib not available: %s skipped" % os.path.basename(path))
+        return
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4.4))
+    meshes = out["meshes"]
+    cells = [r["cells"] for r in meshes.values()]
+    for ax, key in zip(axes, QUANTITIES):
+        lo, hi = LITERATURE[key]
+        # An unstable run's value (far off the range) is drawn at the top
+        # edge with its number, so that the others stay readable
+        top = hi + 2.0 * (hi - lo) + 0.1 * hi
+        values = [r[key] for r in meshes.values()]
+        shown = [min(v, top) for v in values]
+        ax.axhspan(lo, hi, color="0.85", label="literature (80 us)")
+        ax.plot(cells, shown, "o-",
+                label="touchFoam (-n %s)" % ", ".join(meshes))
+        for x, v, r, n in zip(cells, values, meshes.values(), meshes):
+            onset = r["energy"]["onsetTime"]
+            if onset is None:
+                continue
+            before = [h for h in r["history"] if h["time"] < onset]
+            ax.annotate("-n %s: energy grows from %.1f us%s" % (
+                n, 1e6 * onset, "" if v <= top else "; %.4g off scale" % v),
+                (x, min(v, top)), fontsize=7, xytext=(-8, -3),
+                textcoords="offset points", ha="right", va="top",
+                color="C0")
+            if before and key == "peakPlasticStrain":   # saturated by then
+                ax.plot(x, before[-1][key], "D", mfc="none", color="C0",
+                        label="-n %s at %g us, before it"
+                        % (n, 1e6 * before[-1]["time"]))
+        for c in out.get("calculix", []):
+            ax.plot(c["elements"], c[key], "s", color="C3",
+                    label="CalculiX C3D8R" if c is out["calculix"][0]
+                    else None)
+            ax.annotate(c["mesh"], (c["elements"], c[key]), fontsize=7,
+                        xytext=(4, -4), textcoords="offset points",
+                        va="top")
+        rich = out["convergence"][key]["richardson"]
+        if rich and rich["limit"] is not None:
+            ax.axhline(rich["limit"], color="C0", ls=":", lw=1,
+                       label="extrapolated (order %.2f)" % rich["order"])
+        ax.set_xscale("log")
+        ax.set_xlabel("cells / elements (quarter bar)")
+        ax.set_ylabel(QUANTITIES[key])
+    handles = {}
+    for ax in axes:
+        for h, label in zip(*ax.get_legend_handles_labels()):
+            handles.setdefault(label, h)
+    fig.legend(list(handles.values()), list(handles), loc="lower center",
+               ncol=len(handles), fontsize=8, frameon=False)
+    fig.suptitle("Taylor impact at 80 us")
+    fig.tight_layout(rect=(0, 0.07, 1, 1))
+    fig.savefig(path, dpi=120)
+    print("wrote %s" % path)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--n", type=int, nargs="+", default=[3, 6, 9])
+    parser.add_argument("--calculix", nargs="+", default=["4,4,34",
+                                                           "6,6,50"],
+                        help="CalculiX meshes N,M,NY (run_B.sh)")
+    parser.add_argument("--no-calculix", action="store_true")
+    parser.add_argument("--no-run", action="store_true",
+                        help="only post-process the existing runs")
+    args = parser.parse_args()
+    args.n = sorted(args.n)
+    ccx = [] if args.no_calculix else [
+        tuple(int(v) for v in m.split(",")) for m in args.calculix]
+    if any(len(m) != 3 for m in ccx):
+        parser.error("--calculix takes N,M,NY triples")
+    try:
+        if not args.no_run:
+            run.check_openfoam()
+            for n in args.n:
+                run_touch(n)
+            for m in ccx:
+                run_calculix(m)
+        out = {"time": T_END, "literature": LITERATURE,
+               "checkerBoardDefinition":
+               "C = RMS(q_e - mean_nb(q)) / (2 RMS(q - mean q)), over the "
+               "interior cells (no boundary face) and over all cells; "
+               "mean_nb: mean over the cells sharing a face",
+               "date": time.strftime("%Y-%m-%d", time.localtime(
+                   os.path.getmtime(os.path.join(case_dir(args.n[-1]),
+                                                 "wallTime.json")))),
+               "meshes": {str(n): measure(case_dir(n)) for n in args.n}}
+        out["convergence"] = convergence(args.n,
+                                         list(out["meshes"].values()))
+        out["calculix"] = [calculix_result(m) for m in ccx]
+        out["acceptance"] = acceptance(out)
+    except (run.RunError, OSError, ValueError, KeyError) as err:
+        print("taylor: %s" % err, file=sys.stderr)
+        return 1
+    with open(os.path.join(HERE, "results.json"), "w") as f:
+        json.dump(out, f, indent=2)
+    write_markdown(out, os.path.join(HERE, "results.md"))
+    plot(out, os.path.join(HERE, "taylor.png"))
+    with open(os.path.join(HERE, "results.md")) as f:
+        print(f.read())
+    ok = out["acceptance"]["pass"]
+    print("%s (issue 10, acceptance 1): results.json, results.md"
+          % ("PASS" if ok else "FAIL"))
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
