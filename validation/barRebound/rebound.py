@@ -42,7 +42,6 @@ runs/.
 import argparse
 import json
 import os
-import subprocess
 import sys
 import time
 
@@ -51,6 +50,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
 
+from touchfoam.provenance import log_steps_and_clock, build_label  # noqa: E402
 from touchfoam import postprocess, run  # noqa: E402
 from touchfoam.foamfile import read_field  # noqa: E402
 from touchfoam.mesh import PolyMesh  # noqa: E402
@@ -94,18 +94,6 @@ def run_case(n, write):
 
 
 # -- measurements -------------------------------------------------------------
-
-def log_steps_and_clock(case):
-    """(number of steps, touchFoam ClockTime [s]) from log.touchFoam."""
-    steps, clock = 0, None
-    with open(os.path.join(case, "log.touchFoam"), errors="replace") as f:
-        for line in f:
-            if line.startswith("Time = "):
-                steps += 1
-            elif line.startswith("ExecutionTime"):
-                clock = float(line.split("ClockTime =")[1].split()[0])
-    return steps, clock
-
 
 def probe_histories(case, mesh):
     """{name: {label, offset, t, uy}}: u_y of the mesh points at PROBES
@@ -327,21 +315,6 @@ def plot(out, path):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     print("wrote %s" % path)
-
-
-def build_label():
-    """'<HEAD> (libTOUCH.so of <date>)': the commit checked out and when the
-    library was built."""
-    head = subprocess.run(["git", "rev-parse", "--short", "HEAD"],
-                          cwd=run.project_dir(), capture_output=True,
-                          text=True).stdout.strip() or "unknown"
-    for root, _, names in os.walk(os.path.join(run.project_dir(),
-                                               "platforms")):
-        if "libTOUCH.so" in names:
-            stamp = os.path.getmtime(os.path.join(root, "libTOUCH.so"))
-            return "%s (libTOUCH.so of %s)" % (head, time.strftime(
-                "%Y-%m-%d %H:%M", time.localtime(stamp)))
-    return head
 
 
 def main():

@@ -35,7 +35,6 @@ on a log scale).  Wall times: touchFoam's ClockTime and the whole Allrun
 import argparse
 import json
 import os
-import subprocess
 import sys
 import time
 
@@ -44,6 +43,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
 
+from touchfoam.provenance import log_steps_and_clock, build_label  # noqa: E402
 from touchfoam import postprocess, run  # noqa: E402
 from touchfoam.figures import slab_thickness  # noqa: E402
 from touchfoam.mesh import PolyMesh  # noqa: E402
@@ -82,18 +82,6 @@ def run_case(n):
 
 
 # -- measurements -------------------------------------------------------------
-
-def log_steps_and_clock(case):
-    """(number of steps, touchFoam ClockTime [s]) from log.touchFoam."""
-    steps, clock = 0, None
-    with open(os.path.join(case, "log.touchFoam"), errors="replace") as f:
-        for line in f:
-            if line.startswith("Time = "):
-                steps += 1
-            elif line.startswith("ExecutionTime"):
-                clock = float(line.split("ClockTime =")[1].split()[0])
-    return steps, clock
-
 
 def measure(case):
     mesh = PolyMesh(case)
@@ -227,21 +215,6 @@ def plot(meshes, path):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     print("wrote %s" % path)
-
-
-def build_label():
-    """'<HEAD> (libTOUCH.so of <date>)': the commit checked out and when the
-    library was built."""
-    head = subprocess.run(["git", "rev-parse", "--short", "HEAD"],
-                          cwd=run.project_dir(), capture_output=True,
-                          text=True).stdout.strip() or "unknown"
-    for root, _, names in os.walk(os.path.join(run.project_dir(),
-                                               "platforms")):
-        if "libTOUCH.so" in names:
-            stamp = os.path.getmtime(os.path.join(root, "libTOUCH.so"))
-            return "%s (libTOUCH.so of %s)" % (head, time.strftime(
-                "%Y-%m-%d %H:%M", time.localtime(stamp)))
-    return head
 
 
 def main():

@@ -71,6 +71,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
 
+from touchfoam.provenance import log_steps_and_clock  # noqa: E402
 from touchfoam import run  # noqa: E402
 from touchfoam.foamfile import read_field  # noqa: E402
 from touchfoam.mesh import PolyMesh  # noqa: E402
@@ -159,18 +160,6 @@ def run_calculix(mesh):
 
 
 # -- our measurements ---------------------------------------------------------
-
-def log_steps_and_clock(case):
-    """(number of steps, touchFoam ClockTime [s]) from log.touchFoam."""
-    steps, clock = 0, None
-    with open(os.path.join(case, "log.touchFoam"), errors="replace") as f:
-        for line in f:
-            if line.startswith("Time = "):
-                steps += 1
-            elif line.startswith("ExecutionTime"):
-                clock = float(line.split("ClockTime =")[1].split()[0])
-    return steps, clock
-
 
 def face_neighbours(mesh):
     """Owner and neighbour of the internal faces, and the mask of the
