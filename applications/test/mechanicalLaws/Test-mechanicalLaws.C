@@ -175,15 +175,7 @@ int main(int argc, char *argv[])
 
     auto errorMessage = [&](const dictionary& dict)
     {
-        try
-        {
-            mechanicalLaw::New(mesh, dict);
-        }
-        catch (const Foam::error& err)
-        {
-            return string(err.message());
-        }
-        return string("no error");
+        return errorMessageOf([&]() { mechanicalLaw::New(mesh, dict); });
     };
 
     {
