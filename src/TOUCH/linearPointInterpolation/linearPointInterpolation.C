@@ -22,6 +22,7 @@ Foam::linearPointInterpolation::linearPointInterpolation
     nPointCells_(mesh.nPoints(), Zero),
     cellWork_(mesh.nCells()),
     boundaryFaceWork_(mesh.nBoundaryFaces()),
+    pointWork_(mesh.nPoints()),
     limited_(limited)
 {
     if
@@ -95,10 +96,6 @@ void Foam::linearPointInterpolation::interpolate
         }
     }
 
-    const pointField& points = mesh_.points();
-    const vectorField& X = reconstruction_.X().primitiveField();
-    const labelListList& pointCells = mesh_.pointCells();
-
     if (limited_)
     {
         // The reconstruction's limiter of each component of p, on the
@@ -114,6 +111,49 @@ void Foam::linearPointInterpolation::interpolate
             );
         }
     }
+
+    extrapolate(Ui, grad, scale, pointValues);
+}
+
+
+void Foam::linearPointInterpolation::interpolateMomentum
+(
+    const volVectorField& p,
+    const scalar scale,
+    vectorField& pointValues
+) const
+{
+    const linearReconstruction::scheme scheme = reconstruction_.schemeType();
+    const bool limitedAlike =
+        limited_ == (scheme == linearReconstruction::scheme::limitedLinear);
+
+    if (scheme == linearReconstruction::scheme::firstOrder || !limitedAlike)
+    {
+        interpolate(p, scale, pointValues);
+        return;
+    }
+
+    extrapolate
+    (
+        p.primitiveField(),
+        reconstruction_.gradp().primitiveField(),
+        scale,
+        pointValues
+    );
+}
+
+
+void Foam::linearPointInterpolation::extrapolate
+(
+    const vectorField& Ui,
+    const tensorField& grad,
+    const scalar scale,
+    vectorField& pointValues
+) const
+{
+    const pointField& points = mesh_.points();
+    const vectorField& X = reconstruction_.X().primitiveField();
+    const labelListList& pointCells = mesh_.pointCells();
 
     forAll(pointCells, pointi)
     {
@@ -151,6 +191,12 @@ void Foam::linearPointInterpolation::addTranspose
     // f_a/n_a, and the dual H_e = sum_a f_a/n_a (x) (X_a - X_e) of its
     // gradient
     tensorField& dual = cellWork_;
+    vectorField& shares = pointWork_;
+
+    forAll(shares, pointi)
+    {
+        shares[pointi] = pointValues[pointi]/nPointCells_[pointi];
+    }
 
     forAll(cellPoints, celli)
     {
@@ -158,7 +204,7 @@ void Foam::linearPointInterpolation::addTranspose
         tensor H(Zero);
         for (const label pointi : cellPoints[celli])
         {
-            const vector share(pointValues[pointi]/nPointCells_[pointi]);
+            const vector& share = shares[pointi];
             sum += share;
             H += share*(points[pointi] - X[celli]);
         }

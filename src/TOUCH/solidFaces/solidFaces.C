@@ -40,36 +40,6 @@ static void sizeBuffers
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
-Foam::solidFaces::cellValues Foam::solidFaces::cell(const label celli) const
-{
-    return cellValues
-    {
-        lm_[celli], F_[celli], P_[celli],
-        reconstruction_.gradp()[celli],
-        reconstruction_.gradP(0)[celli],
-        reconstruction_.gradP(1)[celli],
-        reconstruction_.gradP(2)[celli],
-        reconstruction_.X()[celli]
-    };
-}
-
-
-Foam::solidFaces::cellValues Foam::solidFaces::neighbour
-(
-    const label patchi,
-    const label i
-) const
-{
-    return cellValues
-    {
-        lmN_[patchi][i], FN_[patchi][i], PN_[patchi][i],
-        gradLmN_[patchi][i],
-        gradPxN_[patchi][i], gradPyN_[patchi][i], gradPzN_[patchi][i],
-        XN_[patchi][i]
-    };
-}
-
-
 void Foam::solidFaces::fillInteriorState(const label patchi)
 {
     const fvPatch& patch = mesh_.boundary()[patchi];

@@ -17,17 +17,18 @@ void Foam::solidFaces::forAllCoupled(Op op) const
     const labelUList& nei = mesh_.neighbour();
     const vectorField& Sf = mesh_.faceAreas();
     const vectorField& Cf = mesh_.faceCentres();
+    const surfaceScalarField& magSfs = mesh_.magSf();
 
     auto visit = [&]
     (
         const label facei,
         const label o,
         const label n,
+        const scalar magSf,
         const cellValues& left,
         const cellValues& right
     )
     {
-        const scalar magSf = mag(Sf[facei]);
         op
         (
             coupledFace
@@ -40,7 +41,11 @@ void Foam::solidFaces::forAllCoupled(Op op) const
 
     forAll(own, facei)
     {
-        visit(facei, own[facei], nei[facei], cell(own[facei]), cell(nei[facei]));
+        visit
+        (
+            facei, own[facei], nei[facei], magSfs[facei],
+            cell(own[facei]), cell(nei[facei])
+        );
     }
 
     forAll(mesh_.boundary(), patchi)
@@ -58,6 +63,7 @@ void Foam::solidFaces::forAllCoupled(Op op) const
                     patch.start() + i,
                     faceCells[i],
                     -1,
+                    magSfs.boundaryField()[patchi][i],
                     cell(faceCells[i]),
                     neighbour(patchi, i)
                 );

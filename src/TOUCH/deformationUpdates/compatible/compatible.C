@@ -93,15 +93,15 @@ void Foam::deformationUpdates::compatible::addUpwindRate
             // part damps the share of the cell jump the reconstruction
             // keeps: the flux of the jump alone
             const vector jump(face.right.lm - face.left.lm);
-            vector pC;
-            vector tC;
-            riemann_.flux
+            const vector tC
             (
-                Zero, Zero, jumpShare(face.pR() - face.pL(), jump)*jump, Zero,
-                face.n(), pC, tC
+                face.magSf
+               *riemann_.upwindTraction
+                (
+                    jumpShare(face.pR() - face.pL(), jump)*jump, face.n()
+                )
             );
 
-            tC *= face.magSf;
             lmRate[face.owner] += tC;
             if (face.neighbour >= 0)
             {
@@ -419,7 +419,7 @@ void Foam::deformationUpdates::compatible::rates
 
     // Point velocities v_a = Pi_a (A v)_a + b_a, and the upwinding of the
     // nodal forces
-    pointInterpolation_.interpolate(faces_.lm(), 1/law_.rho(), pointV);
+    pointInterpolation_.interpolateMomentum(faces_.lm(), 1/law_.rho(), pointV);
     constraints_.constrain(pointV);
 
     if (pointUpwinding_ > 0)

@@ -30,7 +30,9 @@ Foam::riemannSolvers::acoustic::acoustic
 :
     riemannSolver(dict, law),
     Up_(law.Up()),
-    Us_(law.Us())
+    Us_(law.Us()),
+    invUp_(1/Up_),
+    invUs_(1/Us_)
 {}
 
 
@@ -55,7 +57,19 @@ void Foam::riemannSolvers::acoustic::flux
     const vector dtn((n & dt)*n);
 
     tC = 0.5*(tL + tR) + 0.5*(Up_*dpn + Us_*(dp - dpn));
-    pC = 0.5*(pL + pR) + 0.5*(dtn/Up_ + (dt - dtn)/Us_);
+    pC = 0.5*(pL + pR) + 0.5*(invUp_*dtn + invUs_*(dt - dtn));
+}
+
+
+Foam::vector Foam::riemannSolvers::acoustic::upwindTraction
+(
+    const vector& dp,
+    const vector& n
+) const
+{
+    const vector dpn((n & dp)*n);
+
+    return 0.5*(Up_*dpn + Us_*(dp - dpn));
 }
 
 
