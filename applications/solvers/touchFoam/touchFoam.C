@@ -26,6 +26,13 @@ Description
     last good state (the law's state included).  The optional controlDict
     entry maxSteps stops (and writes) after that many steps.
 
+    The log starts with a summary of the run, has a progress line (time,
+    step, wall time, estimated remaining time, cell-steps/s, energy and
+    momenta) every controlDict progressInterval seconds of wall time
+    (default 10; 0: every step) besides the per-step time lines, and ends
+    with the steps, wall time and cell-steps/s of the time loop
+    (runProgress).
+
 Usage
     touchFoam [-parallel] [-case dir]
 
@@ -33,6 +40,7 @@ Usage
 
 #include "fvCFD.H"
 #include "touchSolid.H"
+#include "runProgress.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -60,7 +68,9 @@ int main(int argc, char *argv[])
             << exit(FatalError);
     }
 
-    Info<< "\nStarting time loop\n" << endl;
+    runProgress progress(mesh, solid, maxSteps);
+
+    Info<< "Starting time loop\n" << endl;
 
     for (label step = 1; runTime.run(); ++step)
     {
@@ -100,7 +110,11 @@ int main(int argc, char *argv[])
         runTime.write();
 
         runTime.printExecutionTime(Info);
+
+        progress.step();
     }
+
+    progress.end();
 
     Info<< "End\n" << endl;
 

@@ -230,16 +230,6 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
             << " was measured stable (validation/stabilityMap): the energy"
             << " may grow and cells invert" << endl;
     }
-
-    Info<< "TOUCH: rho " << law_->rho() << ", Up " << law_->Up()
-        << ", Us " << law_->Us() << ", CFL " << timeStep_.CFL()
-        << ", h_min " << timeStep_.hMin() << nl
-        << "    angular momentum preservation "
-        << (preserveAngularMomentum_ ? "on" : "off")
-        << ", F update " << update_->type()
-        << ", " << rungeKutta_.name() << " (" << rungeKutta_.nStages()
-        << "-stage SSP Runge-Kutta)"
-        << nl << endl;
 }
 
 
@@ -398,6 +388,52 @@ Foam::scalar Foam::touchSolid::kineticEnergy() const
 Foam::scalar Foam::touchSolid::strainEnergy() const
 {
     return law_->totalStrainEnergy(F_);
+}
+
+
+void Foam::touchSolid::writeSummary(Ostream& os) const
+{
+    os  << "    mechanical law  " << law_->type() << ": rho " << law_->rho()
+        << ", E " << law_->E() << ", nu " << law_->nu();
+
+    // A law's own constants (vonMisesPlastic: yieldStress,
+    // hardeningModulus) are the other entries of its dictionary, the
+    // contents of constant/mechanicalProperties: every law's are shown
+    // without a print of its own to keep in step with what it reads
+    for (const entry& e : *law_)
+    {
+        const word& key = e.keyword();
+        if
+        (
+            e.isStream()
+         && key != "model" && key != "rho" && key != "E" && key != "nu"
+        )
+        {
+            os  << ", " << key << ' ' << e.stream().toString().c_str();
+        }
+    }
+
+    const word reconstruction(controls_.get<word>("reconstruction"));
+
+    os  << nl
+        << "    elastic moduli  mu " << law_->mu() << ", lambda "
+        << law_->lambda() << ", kappa " << law_->kappa() << nl
+        << "    wave speeds     Up " << law_->Up() << ", Us " << law_->Us()
+        << nl
+        << "    h_min           " << timeStep_.hMin() << nl
+        << "    scheme          Riemann solver " << riemann_->type()
+        << ", reconstruction " << reconstruction;
+
+    if (reconstruction == "limitedLinear")
+    {
+        os  << " (limiter " << controls_.get<word>("limiter") << ')';
+    }
+
+    os  << ", CFL " << timeStep_.CFL() << nl
+        << "                    " << rungeKutta_.name() << " ("
+        << rungeKutta_.nStages() << "-stage SSP Runge-Kutta), F update "
+        << update_->type() << ", angular momentum preservation "
+        << (preserveAngularMomentum_ ? "on" : "off") << nl;
 }
 
 
