@@ -20,7 +20,7 @@ Foam::linearPointInterpolation::linearPointInterpolation
     mesh_(mesh),
     reconstruction_(reconstruction),
     nPointCells_(mesh.nPoints(), Zero),
-    cellWork_(mesh.nCells()),
+    cellWork_(),
     boundaryFaceWork_(mesh.nBoundaryFaces()),
     pointWork_(mesh.nPoints()),
     limited_(limited)
@@ -64,19 +64,17 @@ void Foam::linearPointInterpolation::interpolate
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const vectorField& Ui = U.primitiveField();
-    const vectorField& ownerWeights = reconstruction_.ownerWeights();
-    const vectorField& neighbourWeights = reconstruction_.neighbourWeights();
-
     // Unlimited least-squares gradients: a fixed linear map, so that the
     // transpose below is exact
     tensorField& grad = cellWork_;
+    grad.setSize(mesh_.nCells());
     grad = Zero;
 
     forAll(own, facei)
     {
         const vector dU(Ui[nei[facei]] - Ui[own[facei]]);
-        grad[own[facei]] += ownerWeights[facei]*dU;
-        grad[nei[facei]] += neighbourWeights[facei]*dU;
+        grad[own[facei]] += reconstruction_.ownerWeight(facei)*dU;
+        grad[nei[facei]] += reconstruction_.neighbourWeight(facei)*dU;
     }
 
     forAll(mesh_.boundary(), patchi)
@@ -186,20 +184,27 @@ void Foam::linearPointInterpolation::addTranspose
     const pointField& points = mesh_.points();
     const vectorField& X = reconstruction_.X().primitiveField();
     const labelListList& cellPoints = mesh_.cellPoints();
+    const cellList& cells = mesh_.cells();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const label nInternal = mesh_.nInternalFaces();
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
 
-    // The mean and the extrapolation: each cell collects its points' shares
-    // f_a/n_a, and the dual H_e = sum_a f_a/n_a (x) (X_a - X_e) of its
-    // gradient
-    tensorField& dual = cellWork_;
     vectorField& shares = pointWork_;
-
     forAll(shares, pointi)
     {
         shares[pointi] = pointValues[pointi]/nPointCells_[pointi];
     }
 
+    // Processor faces: this side's share leaves the cell here, and the
+    // neighbour's share arrives from the other rank
+    boundaryFaceWork_ = Zero;
+
     forAll(cellPoints, celli)
     {
+        // The mean and the extrapolation: the cell collects its points'
+        // shares f_a/n_a, and the dual H_e = sum_a f_a/n_a (x) (X_a - X_e)
+        // of its gradient
         vector sum(Zero);
         tensor H(Zero);
         for (const label pointi : cellPoints[celli])
@@ -209,56 +214,39 @@ void Foam::linearPointInterpolation::addTranspose
             H += share*(points[pointi] - X[celli]);
         }
         cellValues[celli] += sum;
+
         // Row d of the dual is component d's
-        dual[celli] =
-            limited_
-          ? tensor
-            (
-                reconstruction_.momentumLimiter()[celli].x()*H.x(),
-                reconstruction_.momentumLimiter()[celli].y()*H.y(),
-                reconstruction_.momentumLimiter()[celli].z()*H.z()
-            )
-          : H;
-    }
-
-    // The gradients: grad_e gains w (x) (U_other - U_e) at every face, so
-    // the transpose moves H_e w from e to the other cell
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-    const vectorField& ownerWeights = reconstruction_.ownerWeights();
-    const vectorField& neighbourWeights = reconstruction_.neighbourWeights();
-
-    forAll(own, facei)
-    {
-        const label o = own[facei];
-        const label n = nei[facei];
-        const vector q
-        (
-            (dual[o] & ownerWeights[facei]) + (dual[n] & neighbourWeights[facei])
-        );
-        cellValues[n] += q;
-        cellValues[o] -= q;
-    }
-
-    // Processor faces: this side's share leaves the cell here, and the
-    // neighbour's share arrives from the other rank
-    const label nInternal = mesh_.nInternalFaces();
-    boundaryFaceWork_ = Zero;
-
-    forAll(mesh_.boundary(), patchi)
-    {
-        const fvPatch& patch = mesh_.boundary()[patchi];
-
-        if (patch.coupled())
+        if (limited_)
         {
-            const vectorField& w = reconstruction_.coupledWeights(patchi);
+            const vector& phi = reconstruction_.momentumLimiter()[celli];
+            H = tensor(phi.x()*H.x(), phi.y()*H.y(), phi.z()*H.z());
+        }
 
-            forAll(patch, i)
+        // The gradient of the cell gains w (x) (U_other - U_e) at each of
+        // its faces, so the transpose moves H_e w from the cell to the
+        // other one
+        for (const label facei : cells[celli])
+        {
+            if (facei < nInternal)
             {
-                const label celli = patch.faceCells()[i];
-                const vector q(dual[celli] & w[i]);
+                const label other =
+                    own[facei] == celli ? nei[facei] : own[facei];
+                const vector q
+                (
+                    H & reconstruction_.weight(celli, X[other] - X[celli])
+                );
+                cellValues[other] += q;
                 cellValues[celli] -= q;
-                boundaryFaceWork_[patch.start() + i - nInternal] = q;
+                continue;
+            }
+
+            const label patchi = patches.whichPatch(facei);
+            if (mesh_.boundary()[patchi].coupled())
+            {
+                const label i = facei - mesh_.boundary()[patchi].start();
+                const vector q(H & reconstruction_.coupledWeights(patchi)[i]);
+                cellValues[celli] -= q;
+                boundaryFaceWork_[facei - nInternal] = q;
             }
         }
     }

@@ -92,14 +92,8 @@ void Foam::linearReconstruction::calcWeights()
             << " stencils" << endl;
     }
 
-    const symmTensorField Minv(inv(M));
-
-    forAll(own, facei)
-    {
-        const vector d(C[nei[facei]] - C[own[facei]]);
-        ownerWeights_[facei] = (Minv[own[facei]] & d)/magSqr(d);
-        neighbourWeights_[facei] = (Minv[nei[facei]] & d)/magSqr(d);
-    }
+    Minv_ = inv(M);
+    const symmTensorField& Minv = Minv_;
 
     forAll(X_.boundaryField(), patchi)
     {
@@ -192,8 +186,7 @@ Foam::linearReconstruction::linearReconstruction
         dimensionedVector("0", dimLength, Zero),
         calculatedFvPatchVectorField::typeName
     ),
-    ownerWeights_(mesh.nInternalFaces(), Zero),
-    neighbourWeights_(mesh.nInternalFaces(), Zero),
+    Minv_(mesh.nCells()),
     coupledWeights_(mesh.boundary().size()),
     gradp_
     (
@@ -379,11 +372,10 @@ void Foam::linearReconstruction::update
 
             if (facei < nInternal)
             {
-                // w (x) (U_other - U_c): the neighbour side's weight with
-                // the jump U_owner - U_neighbour changes sign
-                const bool owner = (own[facei] == c);
-                const label other = owner ? nei[facei] : own[facei];
-                w = owner ? ownerWeights_[facei] : -neighbourWeights_[facei];
+                // w (x) (U_other - U_c), w = Minv_c (X_other - X_c)/|..|^2
+                const label other =
+                    own[facei] == c ? nei[facei] : own[facei];
+                w = weight(c, C[other] - C[c]);
                 pOther = &pi[other];
                 POther = &Pi[other];
             }
