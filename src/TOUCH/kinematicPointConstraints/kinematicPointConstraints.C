@@ -65,9 +65,38 @@ static tensor freeProjector(const tensor& M)
 Foam::kinematicPointConstraints::kinematicPointConstraints(const fvMesh& mesh)
 :
     mesh_(mesh),
-    free_(mesh.nPoints(), tensor::I),
-    prescribed_(mesh.nPoints(), Zero)
-{}
+    boundaryIndex_(mesh.nPoints(), -1)
+{
+    // A point of this rank on another rank's boundary face is constrained
+    // too: mark the boundary points, then combine the marks
+    boolList onBoundary(mesh.nPoints(), false);
+
+    for (const fvPatch& patch : mesh.boundary())
+    {
+        if (!patch.coupled())
+        {
+            for (const face& f : patch.patch())
+            {
+                for (const label pointi : f)
+                {
+                    onBoundary[pointi] = true;
+                }
+            }
+        }
+    }
+
+    syncTools::syncPointList(mesh, onBoundary, orEqOp<bool>(), false);
+
+    boundaryPoints_ = findIndices(onBoundary, true);
+
+    forAll(boundaryPoints_, b)
+    {
+        boundaryIndex_[boundaryPoints_[b]] = b;
+    }
+
+    free_.setSize(boundaryPoints_.size(), tensor::I);
+    prescribed_.setSize(boundaryPoints_.size(), Zero);
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -94,8 +123,9 @@ void Foam::kinematicPointConstraints::add
 
         for (const label pointi : faces[patch.start() + i])
         {
-            free_[pointi] += fixed;
-            prescribeEqOp()(prescribed_[pointi], velocity[i]);
+            const label b = boundaryIndex_[pointi];
+            free_[b] += fixed;
+            prescribeEqOp()(prescribed_[b], velocity[i]);
         }
     }
 }
@@ -103,24 +133,28 @@ void Foam::kinematicPointConstraints::add
 
 void Foam::kinematicPointConstraints::finalise()
 {
-    syncTools::syncPointList(mesh_, free_, plusEqOp<tensor>(), tensor::zero);
     syncTools::syncPointList
     (
-        mesh_, prescribed_, prescribeEqOp(), vector::zero
+        mesh_, boundaryPoints_, free_, plusEqOp<tensor>(), tensor::zero
+    );
+    syncTools::syncPointList
+    (
+        mesh_, boundaryPoints_, prescribed_, prescribeEqOp(), vector::zero
     );
 
-    forAll(free_, pointi)
+    forAll(free_, b)
     {
-        free_[pointi] = freeProjector(free_[pointi]);
+        free_[b] = freeProjector(free_[b]);
     }
 }
 
 
 void Foam::kinematicPointConstraints::constrain(vectorField& pointV) const
 {
-    forAll(pointV, pointi)
+    forAll(boundaryPoints_, b)
     {
-        pointV[pointi] = (free_[pointi] & pointV[pointi]) + prescribed_[pointi];
+        vector& v = pointV[boundaryPoints_[b]];
+        v = (free_[b] & v) + prescribed_[b];
     }
 }
 
@@ -130,9 +164,10 @@ void Foam::kinematicPointConstraints::constrainTranspose
     vectorField& pointForce
 ) const
 {
-    forAll(pointForce, pointi)
+    forAll(boundaryPoints_, b)
     {
-        pointForce[pointi] = free_[pointi].T() & pointForce[pointi];
+        vector& f = pointForce[boundaryPoints_[b]];
+        f = free_[b].T() & f;
     }
 }
 
