@@ -226,15 +226,29 @@ void Foam::deformationUpdates::compatible::calcNodalForces()
     // stress power sum_e P_e : V_e dF_e/dt of the point motion is
     // sum_a f_a . v_a
     pointForce_ = Zero;
+    const bool uniform = shares_.uniform();
 
     faces_.forAllFaces
     (
         [&](const label facei, const label own, const label nei)
         {
+            const face& f = faces[facei];
             const tensor jump(nei >= 0 ? P[own] - P[nei] : P[own]);
+
+            if (uniform)
+            {
+                // Equal shares S_f/n_f: one force for all the face's points
+                const vector force(jump & (Sf[facei]/f.size()));
+                for (const label pointi : f)
+                {
+                    pointForce_[pointi] += force;
+                }
+                return;
+            }
+
             shares_.forAllPoints
             (
-                faces[facei], facei, Sf[facei],
+                f, facei, Sf[facei],
                 [&](const label pointi, const vector& s)
                 {
                     pointForce_[pointi] += jump & s;

@@ -49,20 +49,36 @@ void Foam::deformationUpdate::addFaceMeanFRate
 {
     const faceList& faces = faces_.mesh().faces();
     const vectorField& Sf = faces_.mesh().faceAreas();
+    const bool uniform = shares_.uniform();
 
     faces_.forAllFaces
     (
         [&](const label facei, const label own, const label nei)
         {
+            const face& f = faces[facei];
             tensor flux(Zero);
-            shares_.forAllPoints
-            (
-                faces[facei], facei, Sf[facei],
-                [&](const label pointi, const vector& s)
+
+            if (uniform)
+            {
+                // Equal shares S_f/n_f: the mean point velocity's flux
+                vector sum(Zero);
+                for (const label pointi : f)
                 {
-                    flux += pointV[pointi]*s;
+                    sum += pointV[pointi];
                 }
-            );
+                flux = sum*(Sf[facei]/f.size());
+            }
+            else
+            {
+                shares_.forAllPoints
+                (
+                    f, facei, Sf[facei],
+                    [&](const label pointi, const vector& s)
+                    {
+                        flux += pointV[pointi]*s;
+                    }
+                );
+            }
 
             FRate[own] += flux;
             if (nei >= 0)
