@@ -1,0 +1,911 @@
+#!/usr/bin/python3
+"""touchFoam against CalculiX 2.20 on the same meshes (issue 11, bullet 4).
+
+    ./compare.py [--cases column cube] [-sizes 6 12] [--cube-sizes 16 32]
+                 [--elements C3D8R C3D8] [--cube-elements C3D8 C3D8R]
+                 [--settings default CFL0.6 CFL0.7 RK3-CFL1.0 linear-CFL0.7]
+                 [--cube-settings default CFL0.7 RK3-CFL1.0]
+                 [--reference 330.7] [--band 328.9 332.6]
+                 [--reference-size 24] [--build-label LABEL] [--no-run]
+
+Runs, one at a time and on one thread each (OMP_NUM_THREADS=1 for ccx),
+CalculiX (decks from the peer's generators in ../shared/peers/calculix,
+explicit, its own increment) and touchFoam on the same structured hex
+meshes, in runs/<case>/n<n>/<code>/, and reports for each run the wall time
+of the solver process (and its CPU time), the steps or increments, and the
+error:
+
+column  tutorials/twistingColumn, n x 6n x n cells or C3D8R/C3D8 elements,
+        nu = 0.45, to t = 0.1 s.  Twist = mean over the top-face points at
+        least 0.25 from the axis (postprocess.column_twist's set) of the
+        rotation about +Y (analytic.twist_angle), the same points and
+        formula for both codes.  Error = |twist(0.1 s) - reference|.  The
+        codes converge from opposite sides, so their finest values bracket
+        the converged twist: the band is that bracket (--band; default
+        BAND, from 24x144x24), the reference its middle (--reference);
+        --reference-size 24 makes the two runs (under nice, kept in runs/)
+        and takes both from them.  Every verdict is also checked over the
+        whole band.  Both codes write only at 0.1 s,
+        so each point's angle is taken on the branch nearest the reference
+        (valid while the error is below 180 deg; on 6x36x6 it equals
+        column_twist's unwrapping of 0.01 s writes).  touchFoam settings
+        (--settings; SETTINGS below): the tutorial as it is (RK2, CFL 0.3,
+        solidMonitor every step, writes every 0.05 s) and faster ones with
+        the monitor off and one write at 0.1 s (and, not in the brief, the
+        unlimited reconstruction).  For each mesh: the
+        fastest touchFoam setting whose error is at most CalculiX's, and
+        the ratio of the wall times.
+cube    tutorials/swingingCube on N^3 cells or C3D8/C3D8R elements, to
+        t = 0.004 s, against the closed-form solution (analytic.py):
+          e_v   = sqrt(sum_i w_i |v_i - v(X_i)|^2), the velocity vector:
+                  touchFoam cell centres with cell volumes, CalculiX nodes
+                  with trapezoidal weights (the peer's post_cube.py, which
+                  is run as a check);
+          e_vx  = the same for v_x alone (validation/swingingCube's
+                  number; e_v = sqrt(3) e_vx by the cube's symmetry);
+          e_Pxx = sqrt(sum_e V_e (P_xx,e - P_xx(X_e))^2): touchFoam's cell
+                  values, CalculiX's element stress (the mean over its
+                  integration points) at the element centroid.
+        Errors at equal wall time: each code's log e - log wall line
+        between successive meshes, evaluated at every run's wall time
+        (outside a code's range: extrapolated, marked).
+
+Writes results.json, results.md, column.png, cube.png, and the tables into
+README.md between '<!-- results -->' and '<!-- /results -->'.  --no-run
+re-analyses runs/.  Needs etc/bashrc and ccx.
+"""
+
+import argparse
+import datetime
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
+sys.path.insert(0, HERE)
+
+from touchfoam import analytic, cases, postprocess, provenance, run  # noqa
+from touchfoam.foamfile import read_field  # noqa: E402
+from touchfoam.mesh import PolyMesh  # noqa: E402
+
+import ccx  # noqa: E402
+
+COLUMN_END = 0.1
+COLUMN_NU = 0.45
+CUBE_END = 0.004
+TOP = 6.0
+RMIN = 0.25              # postprocess.column_twist's default
+#: reference twist at 0.1 s and its band [deg] when --reference-size is not
+#: given: the bracket of the 24x144x24 runs (README.md, finding 2)
+REFERENCE = 330.7
+BAND = (328.9, 332.6)
+REFERENCE_SETTING = "default"
+REFERENCE_ELEMENT = "C3D8R"
+NICE = ("nice", "-n", "19")
+RUN_INFO = "run.json"
+BEGIN, END = "<!-- results -->", "<!-- /results -->"
+NEVER = 1000000000       # an interval that is never reached
+
+#: touchFoam settings: TOUCH entries of system/fvSolution; 'quiet' turns the
+#: solidMonitor off (executeInterval and writeInterval: it computes in
+#: execute(), so writeInterval alone would leave it running every step) and
+#: writes the fields at the end time only
+SETTINGS = {
+    "default": {"touch": {}, "quiet": False},
+    "CFL0.6": {"touch": {"CFL": 0.6}, "quiet": True},
+    "CFL0.7": {"touch": {"CFL": 0.7}, "quiet": True},
+    "RK3-CFL1.0": {"touch": {"timeScheme": "RK3", "CFL": 1.0}, "quiet": True},
+    # Not in the brief: the column's tutorial limits its reconstruction
+    # (limitedLinear), the cube's does not (linear); unlimited, the column
+    # twists the same to 0.1 deg in 53-56 % of the time (6x36x6, 12x72x12)
+    "linear-CFL0.7": {"touch": {"reconstruction": "linear", "CFL": 0.7},
+                      "quiet": True},
+}
+
+
+def describe(setting):
+    s = SETTINGS[setting]
+    if not s["touch"] and not s["quiet"]:
+        return "tutorial as is"
+    return ", ".join(["%s %s" % kv for kv in s["touch"].items()]
+                     + (["monitor off, one write"] if s["quiet"] else []))
+
+
+def run_dir(case, n, code):
+    return os.path.join(HERE, "runs", case, "n%d" % n, code)
+
+
+def reference_dir(n, code):
+    """The column's reference runs (not timed: they run under nice)."""
+    return os.path.join(HERE, "runs", "column", "reference-n%d" % n, code)
+
+
+def _save(folder, info):
+    with open(os.path.join(folder, RUN_INFO), "w") as f:
+        json.dump(info, f, indent=1)
+
+
+def _load(folder):
+    path = os.path.join(folder, RUN_INFO)
+    if not os.path.exists(path):
+        raise run.RunError("%s missing: run without --no-run first" % path)
+    with open(path) as f:
+        return json.load(f)
+
+
+def _stamp():
+    return {"started": datetime.datetime.now().isoformat(timespec="seconds"),
+            "loadBefore": list(os.getloadavg())}
+
+
+# -- touchFoam ----------------------------------------------------------------
+
+def touch_control(setting, end, extra=None):
+    control = {"endTime": end}
+    control.update(extra or {})
+    if SETTINGS[setting]["quiet"]:
+        control.update({"writeInterval": end,
+                        "functions/solidMonitor/executeInterval": NEVER,
+                        "functions/solidMonitor/writeInterval": NEVER})
+    return control
+
+
+def run_touchfoam(case, tutorial, n, setting, control, folder=None,
+                  prefix=()):
+    folder = folder or run_dir(case, n, "touchFoam-" + setting)
+    print("touchFoam %s n=%d %s%s" % (case, n, setting,
+                                      " (%s)" % " ".join(prefix) if prefix
+                                      else ""), flush=True)
+    info = _stamp()
+    start = time.perf_counter()
+    cases.prepare(tutorial, folder, n=n, touch=SETTINGS[setting]["touch"],
+                  control=control, **({"nu": COLUMN_NU}
+                                      if tutorial == "twistingColumn" else {}))
+    info["prepareWall"] = time.perf_counter() - start
+    info["wall"], info["cpu"] = ccx.timed(list(prefix) + ["touchFoam"],
+                                          folder, "touchFoam",
+                                          env=ccx.ONE_THREAD)
+    info["loadAfter"] = list(os.getloadavg())
+    info["steps"], info["clockTime"] = provenance.log_steps_and_clock(folder)
+    info["dt0"] = _first_dt(folder)
+    info["setting"] = setting
+    _save(folder, info)
+    print("    wall %.2f s, cpu %.2f s, %d steps" % (
+        info["wall"], info["cpu"], info["steps"]), flush=True)
+
+
+def _first_dt(folder):
+    with open(os.path.join(folder, "log.touchFoam"), errors="replace") as f:
+        for line in f:
+            if line.startswith("Time = ") and "deltaT" in line:
+                return float(line.split("deltaT =")[1])
+    return None
+
+
+# -- CalculiX -----------------------------------------------------------------
+
+def run_calculix(case, n, element, folder=None, prefix=()):
+    folder = folder or run_dir(case, n, "ccx-" + element)
+    job = "%s%d_%s" % (case, n, element)
+    print("ccx %s n=%d %s%s" % (case, n, element,
+                                " (%s)" % " ".join(prefix) if prefix
+                                else ""), flush=True)
+    if os.path.exists(folder):
+        shutil.rmtree(folder)
+    info = _stamp()
+    start = time.perf_counter()
+    if case == "column":
+        ccx.column_deck(folder, job, n, element, COLUMN_NU, COLUMN_END)
+    else:
+        ccx.cube_deck(folder, job, n, element, CUBE_END)
+    info["prepareWall"] = time.perf_counter() - start
+    info["wall"], info["cpu"] = ccx.run_ccx(folder, job, prefix)
+    info["loadAfter"] = list(os.getloadavg())
+    info["job"] = job
+    info["element"] = element
+    info["steps"] = ccx.increments(os.path.join(folder, job + ".frd"))
+    dts = ccx.selected_dt(os.path.join(folder, "log.ccx"))
+    info["dt0"] = dts[0] if dts else None
+    if info["steps"] is None and info["dt0"]:
+        # No results in the .frd (the cube deck prints to the .dat only):
+        # the increment is fixed for the step and the last one is cut to
+        # end at t_end (log: 'the increment size exceeds the remainder')
+        end = COLUMN_END if case == "column" else CUBE_END
+        info["steps"] = int(math.ceil(end / info["dt0"] - 1e-9))
+    _save(folder, info)
+    print("    wall %.2f s, cpu %.2f s, %s increments" % (
+        info["wall"], info["cpu"], info["steps"]), flush=True)
+
+
+# -- twisting column ----------------------------------------------------------
+
+def top_twist(X, u, reference_deg, rmin=RMIN):
+    """Mean twist [deg] of the top-face points of X (displacements u),
+    each angle on the branch nearest the reference."""
+    X, u = np.asarray(X, float), np.asarray(u, float)
+    top = (np.abs(X[:, 1] - TOP) < 1e-9) & (np.hypot(X[:, 0], X[:, 2])
+                                            >= max(rmin, 1e-12))
+    if not top.any():
+        raise ValueError("no top-face points")
+    ref = math.radians(reference_deg)
+    theta = analytic.twist_angle(X[top], u[top])
+    theta = ref + np.angle(np.exp(1j * (theta - ref)))
+    return math.degrees(float(theta.mean())), int(top.sum())
+
+
+def touch_top(folder, t):
+    m = PolyMesh(folder)
+    u = read_field(os.path.join(run.time_dir(folder, t), "pointU")
+                   ).internal(len(m.points))
+    return m.points, u
+
+
+def ccx_top(folder, job, t):
+    nodes, _, _ = ccx.read_inp(os.path.join(folder, job + ".inp"))
+    block = ccx.last_block(ccx.read_dat(os.path.join(folder, job + ".dat")),
+                           "displacements", "NTOP")
+    if abs(block["time"] - t) > 1e-6 * t:
+        raise ValueError("%s: last NTOP print at t = %g, not %g"
+                         % (job, block["time"], t))
+    rows = np.array(block["rows"])
+    X = np.array([nodes[int(i)] for i in rows[:, 0]])
+    return X, rows[:, 1:4]
+
+
+def check_column_material():
+    mat = cases.material(run.tutorial_dir("twistingColumn"))
+    for key in ("E", "rho"):
+        if not math.isclose(mat[key], ccx.COLUMN_PEER[key], rel_tol=1e-12):
+            raise ValueError("twistingColumn %s = %g, the CalculiX deck has "
+                             "%g" % (key, mat[key], ccx.COLUMN_PEER[key]))
+
+
+def reference_twist(args):
+    """(reference, band, record): given, or from the reference runs.
+
+    The two codes approach the converged twist from opposite sides
+    (touchFoam from below, CalculiX from above, on every mesh measured),
+    so on the finest mesh their values bracket it: the band is that
+    bracket, the reference its middle.
+    """
+    if not args.reference_size:
+        return args.reference, list(args.band), {
+            "source": "--reference and --band; the defaults are the bracket "
+            "of CalculiX %s and touchFoam %s on 24x144x24, README.md"
+            % (REFERENCE_ELEMENT, REFERENCE_SETTING)}
+    n = args.reference_size
+    twists = {}
+    for code in ("ccx-" + REFERENCE_ELEMENT,
+                 "touchFoam-" + REFERENCE_SETTING):
+        folder = reference_dir(n, code)
+        info = _load(folder)
+        twists[code] = {"twist": _twist_of(folder, code, info, args),
+                        "wall": info["wall"], "cpu": info["cpu"],
+                        "steps": info["steps"]}
+        twists[code].update(_richardson(code, n, twists[code]["twist"],
+                                        args))
+    values = sorted(t["twist"] for t in twists.values())
+    return (0.5 * (values[0] + values[1]), values,
+            {"source": "the bracket of CalculiX %s and touchFoam %s on "
+             "%dx%dx%d" % (REFERENCE_ELEMENT, REFERENCE_SETTING, n, 6 * n, n),
+             "runs": twists})
+
+
+def _twist_of(folder, code, info, args):
+    X, u = (ccx_top(folder, info["job"], COLUMN_END)
+            if code.startswith("ccx") else touch_top(folder, COLUMN_END))
+    return top_twist(X, u, args.reference)[0]
+
+
+def _richardson(code, n, finest, args):
+    """Observed order and extrapolated twist from n/4, n/2 (comparison
+    runs, when present) and n: T* = T_n + (T_n - T_n/2) / (2^p - 1)."""
+    t = []
+    for m in (n // 4, n // 2):
+        folder = run_dir("column", m, code)
+        if n % 4 or not os.path.exists(os.path.join(folder, RUN_INFO)):
+            return {}
+        t.append(_twist_of(folder, code, _load(folder), args))
+    t.append(finest)
+    d1, d2 = t[1] - t[0], t[2] - t[1]
+    if d1 * d2 <= 0 or abs(d2) >= abs(d1):
+        return {"coarser": t[:2], "order": None, "extrapolated": None}
+    p = math.log(d1 / d2) / math.log(2.0)
+    # Far from any order a scheme can have: not in the asymptotic range,
+    # and the extrapolation would mean nothing
+    usable = 0.5 <= p <= 4.0
+    return {"coarser": t[:2], "order": p,
+            "extrapolated": t[2] + d2 / (2.0 ** p - 1.0) if usable
+            else None}
+
+
+def analyse_column(args):
+    check_column_material()
+    ref, band_ends, record = reference_twist(args)
+    band = np.linspace(band_ends[0], band_ends[1], 41)
+    out = {"time": COLUMN_END, "nu": COLUMN_NU, "reference": ref,
+           "band": band_ends, "referenceFrom": record, "rmin": RMIN,
+           "meshes": {}}
+    for n in args.sizes:
+        rows = []
+        for element in args.elements:
+            folder = run_dir("column", n, "ccx-" + element)
+            info = _load(folder)
+            X, u = ccx_top(folder, info["job"], COLUMN_END)
+            rows.append(_column_row("CalculiX", element, info, X, u, ref))
+        for setting in args.settings:
+            folder = run_dir("column", n, "touchFoam-" + setting)
+            info = _load(folder)
+            X, u = touch_top(folder, COLUMN_END)
+            rows.append(_column_row("touchFoam", setting, info, X, u, ref))
+        out["meshes"][str(n)] = {"cells": 6 * n ** 3, "runs": rows,
+                                 "fastest": _fastest(rows, ref, band)}
+    out["equalWall"] = equal_wall(out, ("error",))
+    return out
+
+
+def _column_row(code, variant, info, X, u, ref):
+    twist, npts = top_twist(X, u, ref)
+    twist_all, _ = top_twist(X, u, ref, rmin=0.0)
+    return {"code": code, "variant": variant,
+            "description": describe(variant) if code == "touchFoam"
+            else "explicit, one step, CalculiX's increment",
+            "wall": info["wall"], "cpu": info["cpu"], "steps": info["steps"],
+            "dt0": info["dt0"], "prepareWall": info["prepareWall"],
+            "load": [info["loadBefore"][0], info["loadAfter"][0]],
+            "twist": twist, "points": npts, "twistAllPoints": twist_all,
+            "error": abs(twist - ref)}
+
+
+def _fastest(rows, ref, band):
+    """Per CalculiX element: the fastest touchFoam run with error <= its."""
+    out = {}
+    tf = [r for r in rows if r["code"] == "touchFoam"]
+    for c in (r for r in rows if r["code"] == "CalculiX"):
+        ok = sorted((r for r in tf if r["error"] <= c["error"]),
+                    key=lambda r: r["wall"])
+        entry = {"calculixError": c["error"], "calculixWall": c["wall"],
+                 "calculixCpu": c["cpu"], "setting": None}
+        # With none as accurate: the most accurate one, for the band test
+        best = ok[0] if ok else min(tf, key=lambda r: r["error"],
+                                    default=None)
+        if best is None:
+            continue
+        holds = [float(b) for b in band
+                 if abs(best["twist"] - b) <= abs(c["twist"] - b)]
+        entry.update({
+            "setting": best["variant"] if ok else None,
+            "mostAccurate": best["variant"], "error": best["error"],
+            "twist": best["twist"], "calculixTwist": c["twist"],
+            "wall": best["wall"], "cpu": best["cpu"],
+            "wallRatio": c["wall"] / best["wall"],
+            "cpuRatio": c["cpu"] / best["cpu"],
+            # |t - r| <= |c - r| exactly when r is on t's side of (t + c)/2
+            "crossover": 0.5 * (best["twist"] + c["twist"]),
+            "holdsForReferences": [min(holds), max(holds)] if holds
+            else None})
+        out[c["variant"]] = entry
+    return out
+
+
+# -- swinging cube ------------------------------------------------------------
+
+def check_cube_material():
+    mat = cases.material(run.tutorial_dir("swingingCube"))
+    for key in ("E", "nu", "rho"):
+        if not math.isclose(mat[key], ccx.CUBE_PEER[key], rel_tol=1e-12):
+            raise ValueError("swingingCube %s = %g, the CalculiX deck has %g"
+                             % (key, mat[key], ccx.CUBE_PEER[key]))
+    p = ccx.CUBE_PEER
+    return analytic.SwingingCube(E=p["E"], nu=p["nu"], rho=p["rho"],
+                                 U0=p["U0"])
+
+
+def touch_cube_errors(folder):
+    e = postprocess.swinging_cube_errors(folder, CUBE_END)
+    ev = math.sqrt(sum(e[c]["L2"] ** 2 for c in ("vx", "vy", "vz")))
+    eP = math.sqrt(sum(e[c]["L2"] ** 2 for c in ("Pxx", "Pyy", "Pzz")) / 3)
+    return {"ev": ev, "evx": e["vx"]["L2"], "ePxx": e["Pxx"]["L2"],
+            "ePnormal": eP, "time": CUBE_END}
+
+
+def ccx_cube_errors(folder, job, n, sol):
+    nodes, elements, _ = ccx.read_inp(os.path.join(folder, job + ".inp"))
+    blocks = ccx.read_dat(os.path.join(folder, job + ".dat"))
+    vb = ccx.last_block(blocks, "velocities", "NALL")
+    sb = ccx.last_block(blocks, "stresses", "EALL")
+    t = vb["time"]
+    # velocity: nodes, trapezoidal weights (0.5/N on the faces, 1/N inside)
+    rows = np.array(vb["rows"])
+    X = np.array([nodes[int(i)] for i in rows[:, 0]])
+    w1 = np.where((np.abs(X) < 1e-9) | (np.abs(X - 1) < 1e-9), 0.5 / n,
+                  1.0 / n)
+    w = w1.prod(axis=1)
+    if not math.isclose(w.sum(), 1.0, rel_tol=1e-9):
+        raise ValueError("%s: nodal weights sum to %g" % (job, w.sum()))
+    dv = rows[:, 1:4] - sol.velocity(X, t)
+    # stress: element mean over the integration points, at the centroid
+    srows = np.array(sb["rows"])
+    ids = srows[:, 0].astype(int)
+    order = np.unique(ids)
+    counts = np.bincount(np.searchsorted(order, ids))
+    S = np.zeros((len(order), 6))
+    np.add.at(S, np.searchsorted(order, ids), srows[:, 2:8])
+    S /= counts[:, None]
+    C = np.array([np.mean([nodes[k] for k in elements[e]], axis=0)
+                  for e in order])
+    P = sol.stress(C, sb["time"])
+    dP = S[:, :3] - np.stack([P[:, 0, 0], P[:, 1, 1], P[:, 2, 2]], axis=1)
+    V = 1.0 / len(order)            # a uniform mesh of the unit cube
+    return {"ev": float(np.sqrt(np.sum(w * np.sum(dv ** 2, axis=1)))),
+            "evx": float(np.sqrt(np.sum(w * dv[:, 0] ** 2))),
+            "ePxx": float(np.sqrt(V * np.sum(dP[:, 0] ** 2))),
+            "ePnormal": float(np.sqrt(V * np.sum(dP ** 2) / 3)),
+            "time": t, "integrationPoints": int(counts.max())}
+
+
+def peer_cube_ev(folder, job, n):
+    """L2_v of the peer's post_cube.py (a check of e_v), or None."""
+    log = os.path.join(folder, job + ".log")      # post_cube.py reads it
+    if not os.path.exists(log):
+        os.symlink("log.ccx", log)
+    try:
+        run.run([run.PYTHON, os.path.join(ccx.peer_dir(), "post_cube.py"),
+                 job, str(n)], folder, "post_cube")
+        with open(os.path.join(folder, job + ".json")) as f:
+            return json.load(f)["L2_v"]
+    except (run.RunError, OSError, KeyError, ValueError) as err:
+        print("post_cube.py check skipped: %s" % str(err).split("\n")[0])
+        return None
+
+
+def analyse_cube(args):
+    sol = check_cube_material()
+    out = {"time": CUBE_END, "meshes": {}}
+    for n in args.cube_sizes:
+        rows = []
+        for element in args.cube_elements:
+            folder = run_dir("cube", n, "ccx-" + element)
+            info = _load(folder)
+            e = ccx_cube_errors(folder, info["job"], n, sol)
+            e["peerEv"] = peer_cube_ev(folder, info["job"], n)
+            rows.append(_cube_row("CalculiX", element, info, e))
+        for setting in args.cube_settings:
+            folder = run_dir("cube", n, "touchFoam-" + setting)
+            info = _load(folder)
+            rows.append(_cube_row("touchFoam", setting, info,
+                                  touch_cube_errors(folder)))
+        out["meshes"][str(n)] = {"cells": n ** 3, "runs": rows,
+                                 "fastest": {k: _fastest_by(rows, k)
+                                             for k in ("ev", "ePxx")}}
+    out["equalWall"] = equal_wall(out, ("ev", "ePxx"))
+    return out
+
+
+def _fastest_by(rows, key):
+    """Per CalculiX element: the fastest touchFoam run whose error `key`
+    is at most CalculiX's, and the wall-time ratio (None: none is)."""
+    out = {}
+    for c in (r for r in rows if r["code"] == "CalculiX"):
+        ok = sorted((r for r in rows if r["code"] == "touchFoam"
+                     and r[key] <= c[key]), key=lambda r: r["wall"])
+        out[c["variant"]] = {
+            "calculixError": c[key], "calculixWall": c["wall"],
+            "setting": ok[0]["variant"] if ok else None,
+            "error": ok[0][key] if ok else None,
+            "wall": ok[0]["wall"] if ok else None,
+            "wallRatio": c["wall"] / ok[0]["wall"] if ok else None,
+            "cpuRatio": c["cpu"] / ok[0]["cpu"] if ok else None}
+    return out
+
+
+def _cube_row(code, variant, info, errors):
+    row = {"code": code, "variant": variant,
+           "description": describe(variant) if code == "touchFoam"
+           else "explicit, CalculiX's increment",
+           "wall": info["wall"], "cpu": info["cpu"], "steps": info["steps"],
+           "dt0": info["dt0"], "prepareWall": info["prepareWall"],
+           "load": [info["loadBefore"][0], info["loadAfter"][0]]}
+    row.update(errors)
+    return row
+
+
+# -- equal wall time ----------------------------------------------------------
+
+def curves(result, key):
+    """{label: [(wall, error, n)]} over the meshes, sorted by wall."""
+    out = {}
+    for n, mesh in result["meshes"].items():
+        for r in mesh["runs"]:
+            label = ("%s %s" % (r["code"], r["variant"]))
+            out.setdefault(label, []).append((r["wall"], r[key], int(n)))
+    return {k: sorted(v) for k, v in out.items()}
+
+
+def at_wall(points, wall):
+    """(error, extrapolated) of a curve at a wall time, log-log linear."""
+    pts = [(w, e) for w, e, _ in points if w > 0 and e > 0]
+    if len(pts) < 2:
+        return None, None
+    i = 0
+    while i < len(pts) - 2 and wall > pts[i + 1][0]:
+        i += 1
+    (w1, e1), (w2, e2) = pts[i], pts[i + 1]
+    slope = math.log(e2 / e1) / math.log(w2 / w1)
+    e = math.exp(math.log(e1) + slope * math.log(wall / w1))
+    return e, not (pts[0][0] <= wall <= pts[-1][0])
+
+
+def equal_wall(result, keys):
+    out = {}
+    for key in keys:
+        cs = curves(result, key)
+        rows = []
+        for label, pts in cs.items():
+            for w, e, n in pts:
+                row = {"wall": w, "from": "%s n=%d" % (label, n),
+                       "errors": {}}
+                for other, opts in cs.items():
+                    val, extra = at_wall(opts, w)
+                    row["errors"][other] = {"error": val,
+                                            "extrapolated": extra}
+                rows.append(row)
+        out[key] = sorted(rows, key=lambda r: r["wall"])
+    return out
+
+
+# -- reports ------------------------------------------------------------------
+
+def _g(x, fmt="%.3g"):
+    return "-" if x is None else fmt % x
+
+
+def column_markdown(res):
+    ref, band = res["reference"], res["band"]
+    lines = [
+        "### Twisting column, nu = %g, t = %g s" % (res["nu"], res["time"]),
+        "",
+        "Twist: mean rotation about +Y of the top-face points at least %g "
+        "from the axis; error = |twist - %.1f deg|, reference band "
+        "%.1f-%.1f deg (%s).  'all points': the mean over every top-face "
+        "point but the axis (the peer README's point set)." % (
+            res["rmin"], ref, band[0], band[1],
+            res["referenceFrom"]["source"]), "",
+    ]
+    record = res["referenceFrom"]
+    if "runs" in record:
+        lines += ["Reference runs (under nice; times not compared) and the "
+                  "Richardson extrapolation from n/4, n/2, n (none when the "
+                  "observed order is outside 0.5-4):", "",
+                  "| run | steps | CPU [s] | twist [deg] | n/4, n/2 [deg] | "
+                  "observed order | extrapolated [deg] |",
+                  "|---|---|---|---|---|---|---|"]
+        for code, r in record["runs"].items():
+            lines.append("| %s | %s | %.0f | %.2f | %s | %s | %s |" % (
+                code, r["steps"], r["cpu"], r["twist"],
+                ", ".join("%.1f" % x for x in r.get("coarser", [])) or "-",
+                _g(r.get("order"), "%.2f"),
+                _g(r.get("extrapolated"), "%.1f")))
+        lines.append("")
+    lines += [
+        "| mesh | code | setting | steps | dt0 [s] | wall [s] | CPU [s] | "
+        "twist [deg] | all points [deg] | error [deg] | load |",
+        "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for n, mesh in res["meshes"].items():
+        for r in mesh["runs"]:
+            lines.append("| %sx%dx%s | %s | %s | %s | %s | %.2f | %.2f | "
+                         "%.1f | %.1f | %.1f | %.1f-%.1f |" % (
+                             n, 6 * int(n), n, r["code"], r["variant"],
+                             r["steps"], _g(r["dt0"]), r["wall"], r["cpu"],
+                             r["twist"], r["twistAllPoints"], r["error"],
+                             r["load"][0], r["load"][1]))
+    lines += ["", "Fastest touchFoam setting with an error at most "
+              "CalculiX's, same mesh (acceptance: >= 4x faster in wall "
+              "time):", "",
+              "| mesh | CalculiX | its error [deg] | its wall [s] | "
+              "touchFoam setting | error [deg] | wall [s] | wall ratio | "
+              "CPU ratio | as accurate for references [deg] |",
+              "|---|---|---|---|---|---|---|---|---|---|"]
+    for n, mesh in res["meshes"].items():
+        for el, f in mesh["fastest"].items():
+            h = f.get("holdsForReferences")
+            name = f["setting"] or "none (most accurate: %s)" % (
+                f["mostAccurate"])
+            side = "<=" if f["twist"] <= f["calculixTwist"] else ">="
+            lines.append("| %sx%dx%s | %s | %.1f | %.2f | %s | %.1f | %.2f | "
+                         "%.2f | %.2f | %s %.1f (in the band: %s) |" % (
+                             n, 6 * int(n), n, el, f["calculixError"],
+                             f["calculixWall"], name, f["error"],
+                             f["wall"], f["wallRatio"], f["cpuRatio"],
+                             side, f["crossover"],
+                             "%.1f-%.1f" % tuple(h) if h else "none"))
+    lines += equal_wall_markdown(res["equalWall"]["error"],
+                                 "Twist error [deg]", "%.1f")
+    return lines
+
+
+def cube_markdown(res):
+    lines = [
+        "### Swinging cube, t = %g s" % res["time"], "",
+        "e_v: velocity vector (the peer's post_cube.py L2_v, its value in "
+        "'post_cube'); e_vx: v_x alone (validation/swingingCube); e_Pxx: "
+        "P_xx (CalculiX: element stress, mean of the integration points, at "
+        "the centroid).", "",
+        "| N | code | setting | steps | dt0 [s] | wall [s] | CPU [s] | e_v "
+        "[m/s] | post_cube | e_vx [m/s] | e_Pxx [Pa] | load |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for n, mesh in res["meshes"].items():
+        for r in mesh["runs"]:
+            lines.append("| %s | %s | %s | %s | %s | %.2f | %.2f | %.3e | %s "
+                         "| %.3e | %.3e | %.1f-%.1f |" % (
+                             n, r["code"], r["variant"], r["steps"],
+                             _g(r["dt0"]), r["wall"], r["cpu"], r["ev"],
+                             _g(r.get("peerEv"), "%.3e"), r["evx"],
+                             r["ePxx"], r["load"][0], r["load"][1]))
+    lines += ["", "Fastest touchFoam setting with an error at most "
+              "CalculiX's, same mesh:", "",
+              "| N | error | CalculiX | its error | its wall [s] | touchFoam "
+              "setting | error | wall [s] | wall ratio | CPU ratio |",
+              "|---|---|---|---|---|---|---|---|---|---|"]
+    for n, mesh in res["meshes"].items():
+        for key, name in (("ev", "e_v"), ("ePxx", "e_Pxx")):
+            for el, f in mesh["fastest"][key].items():
+                lines.append("| %s | %s | %s | %.3e | %.2f | %s | %s | %s | "
+                             "%s | %s |" % (
+                                 n, name, el, f["calculixError"],
+                                 f["calculixWall"], f["setting"] or "none",
+                                 _g(f["error"], "%.3e"), _g(f["wall"], "%.2f"),
+                                 _g(f["wallRatio"], "%.2f"),
+                                 _g(f["cpuRatio"], "%.2f")))
+    for key, name in (("ev", "e_v [m/s]"), ("ePxx", "e_Pxx [Pa]")):
+        lines += equal_wall_markdown(res["equalWall"][key], name, "%.2e")
+    return lines
+
+
+def equal_wall_markdown(rows, name, fmt):
+    if not rows:
+        return []
+    labels = list(rows[0]["errors"])
+    if all(v["error"] is None for r in rows for v in r["errors"].values()):
+        return []
+    lines = ["", "%s at equal wall time (log-log between meshes; * "
+             "extrapolated):" % name, "",
+             "| wall [s] | run | " + " | ".join(labels) + " |",
+             "|---|---|" + "---|" * len(labels)]
+    for r in rows:
+        cells = []
+        for lab in labels:
+            v = r["errors"][lab]
+            cells.append("-" if v["error"] is None else (fmt % v["error"])
+                         + ("*" if v["extrapolated"] else ""))
+        lines.append("| %.2f | %s | %s |" % (r["wall"], r["from"],
+                                             " | ".join(cells)))
+    return lines
+
+
+def write_reports(results):
+    lines = ["# touchFoam and CalculiX 2.20: wall time and error", "",
+             "Generated by compare.py (%s); touchFoam build %s; %s." % (
+                 results["date"], results["build"], results["ccx"]), ""]
+    if "column" in results:
+        lines += column_markdown(results["column"]) + [""]
+    if "cube" in results:
+        lines += cube_markdown(results["cube"]) + [""]
+    text = "\n".join(lines)
+    with open(os.path.join(HERE, "results.md"), "w") as f:
+        f.write(text)
+    readme = os.path.join(HERE, "README.md")
+    if os.path.exists(readme):
+        with open(readme) as f:
+            old = f.read()
+        if BEGIN in old and END in old:
+            head, rest = old.split(BEGIN, 1)
+            tail = rest.split(END, 1)[1]
+            body = "\n".join(lines[2:])
+            with open(readme, "w") as f:
+                f.write(head + BEGIN + "\n" + body + "\n" + END + tail)
+
+
+def plot(results):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib not available: plots skipped")
+        return
+    if "column" in results:
+        res = results["column"]
+        fig, (ax, ax2) = plt.subplots(1, 2, figsize=(11, 4.5))
+        b0, b1 = res["band"]
+        ax2.axhspan(b0, b1, color="0.9", label="reference band")
+        ax2.axhline(res["reference"], color="0.5", lw=0.8)
+        for label, pts in curves(res, "twist").items():
+            style = "s--" if label.startswith("CalculiX") else "o-"
+            ax2.semilogx([p[0] for p in pts], [p[1] for p in pts], style,
+                         label=label)
+            for p in pts:
+                ax2.annotate("%d" % p[2], (p[0], p[1]), fontsize=6,
+                             textcoords="offset points", xytext=(3, 3))
+        ax2.set_xlabel("wall time of the solver [s]")
+        ax2.set_ylabel("mean top-face twist at 0.1 s [deg]")
+        ax2.legend(fontsize=7)
+        for label, pts in curves(res, "error").items():
+            w = [p[0] for p in pts]
+            e = [max(p[1], 1e-2) for p in pts]
+            twist = {(r["code"] + " " + r["variant"], int(n)): r["twist"]
+                     for n, m in res["meshes"].items() for r in m["runs"]}
+            lo = [max(max(0.0, b0 - twist[(label, p[2])],
+                          twist[(label, p[2])] - b1), 1e-2) for p in pts]
+            hi = [max(abs(twist[(label, p[2])] - b0),
+                      abs(twist[(label, p[2])] - b1)) for p in pts]
+            style = "s--" if label.startswith("CalculiX") else "o-"
+            line, = ax.loglog(w, e, style, label=label)
+            ax.errorbar(w, e, yerr=[np.subtract(e, lo), np.subtract(hi, e)],
+                        fmt="none", ecolor=line.get_color(), alpha=0.4)
+            for p, ei in zip(pts, e):
+                ax.annotate("%d" % p[2], (p[0], ei), fontsize=6,
+                            textcoords="offset points", xytext=(3, 3))
+        ax.set_xlabel("wall time of the solver [s]")
+        ax.set_ylabel("|twist(0.1 s) - %.1f| [deg]" % res["reference"])
+        ax.set_title("Twisting column (labels: n; bars: reference %.1f-%.1f)"
+                     % (b0, b1), fontsize=9)
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(os.path.join(HERE, "column.png"), dpi=120)
+        plt.close(fig)
+        print("wrote column.png")
+    if "cube" in results:
+        res = results["cube"]
+        fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
+        for ax, key, name in ((axes[0], "ev", "velocity e_v [m/s]"),
+                              (axes[1], "ePxx", "stress e_Pxx [Pa]")):
+            for label, pts in curves(res, key).items():
+                style = "s--" if label.startswith("CalculiX") else "o-"
+                ax.loglog([p[0] for p in pts], [p[1] for p in pts], style,
+                          label=label)
+                for p in pts:
+                    ax.annotate("%d" % p[2], (p[0], p[1]), fontsize=6,
+                                textcoords="offset points", xytext=(3, 3))
+            ax.set_xlabel("wall time of the solver [s]")
+            ax.set_ylabel(name)
+            ax.legend(fontsize=7)
+        axes[0].set_title("Swinging cube at t = 0.004 s (labels: N)",
+                          fontsize=9)
+        fig.tight_layout()
+        fig.savefig(os.path.join(HERE, "cube.png"), dpi=120)
+        plt.close(fig)
+        print("wrote cube.png")
+
+
+# -- main ---------------------------------------------------------------------
+
+def run_all(args):
+    if "column" in args.cases and args.reference_size:
+        # Kept between invocations (Allclean removes them): they are long
+        n = args.reference_size
+        ccx_ref = reference_dir(n, "ccx-" + REFERENCE_ELEMENT)
+        tf_ref = reference_dir(n, "touchFoam-" + REFERENCE_SETTING)
+        if not os.path.exists(os.path.join(ccx_ref, RUN_INFO)):
+            run_calculix("column", n, REFERENCE_ELEMENT, prefix=NICE,
+                         folder=ccx_ref)
+        if not os.path.exists(os.path.join(tf_ref, RUN_INFO)):
+            run_touchfoam("column", "twistingColumn", n, REFERENCE_SETTING,
+                          touch_control(REFERENCE_SETTING, COLUMN_END),
+                          prefix=NICE, folder=tf_ref)
+    if "column" in args.cases:
+        for n in args.sizes:
+            for element in args.elements:
+                run_calculix("column", n, element)
+            for setting in args.settings:
+                run_touchfoam("column", "twistingColumn", n, setting,
+                              touch_control(setting, COLUMN_END))
+    if "cube" in args.cases:
+        for n in args.cube_sizes:
+            for element in args.cube_elements:
+                run_calculix("cube", n, element)
+            for setting in args.cube_settings:
+                run_touchfoam("cube", "swingingCube", n, setting,
+                              touch_control(setting, CUBE_END,
+                                            {"writePrecision": 17}))
+
+
+def build_label(given=None):
+    """Which touchFoam ran: --build-label, else provenance.build_label()
+    flagged when src/ or applications/ differ from the commit, or the
+    folder of a touchFoam that is not this checkout's."""
+    solver = shutil.which("touchFoam") or "?"
+    if given:
+        return "%s (%s)" % (given, solver)
+    if not os.path.realpath(solver).startswith(
+            os.path.realpath(run.project_dir()) + os.sep):
+        return "touchFoam of %s (not this checkout's build)" % solver
+    label = provenance.build_label()
+    try:
+        dirty = subprocess.check_output(
+            ["git", "-C", run.project_dir(), "status", "--porcelain", "--",
+             "src", "applications"], text=True).strip()
+    except (OSError, subprocess.CalledProcessError):
+        return label + " (git status unknown)"
+    return label + (" + uncommitted changes in src/ or applications/"
+                    if dirty else "")
+
+
+def ccx_version():
+    try:
+        out = subprocess.run(["ccx", "-v"], capture_output=True,
+                                 text=True, timeout=30).stdout
+        for line in out.splitlines():
+            if "Version" in line:
+                return "CalculiX " + line.split("Version", 1)[1].strip()
+    except (OSError, subprocess.SubprocessError):
+        pass
+    return "CalculiX (version unknown)"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--cases", nargs="+", choices=["column", "cube"],
+                        default=["column", "cube"])
+    parser.add_argument("-sizes", "--sizes", type=int, nargs="+",
+                        default=[6, 12], help="column: n x 6n x n")
+    parser.add_argument("--cube-sizes", type=int, nargs="+",
+                        default=[16, 32], help="cube: N^3")
+    parser.add_argument("--elements", nargs="+", default=["C3D8R", "C3D8"],
+                        choices=["C3D8R", "C3D8"])
+    parser.add_argument("--cube-elements", nargs="+",
+                        default=["C3D8", "C3D8R"], choices=["C3D8R", "C3D8"])
+    parser.add_argument("--settings", nargs="+", choices=list(SETTINGS),
+                        default=list(SETTINGS))
+    parser.add_argument("--cube-settings", nargs="+", choices=list(SETTINGS),
+                        default=["default", "CFL0.7", "RK3-CFL1.0"])
+    parser.add_argument("--reference", type=float, default=REFERENCE,
+                        help="reference twist at 0.1 s [deg]")
+    parser.add_argument("--band", type=float, nargs=2, default=list(BAND),
+                        help="band of plausible references [deg]")
+    parser.add_argument("--reference-size", type=int, default=None,
+                        help="run CalculiX %s and touchFoam %s on n x 6n x n "
+                        "(under nice, unless runs/ has them) and take the "
+                        "reference from them"
+                        % (REFERENCE_ELEMENT, REFERENCE_SETTING))
+    parser.add_argument("--build-label", default=None,
+                        help="name of the touchFoam build in the PATH")
+    parser.add_argument("--no-run", action="store_true",
+                        help="only analyse the existing runs/")
+    args = parser.parse_args()
+    args.sizes, args.cube_sizes = sorted(args.sizes), sorted(args.cube_sizes)
+    try:
+        if not args.no_run:
+            run.check_openfoam()
+            ccx.check_ccx()
+            ccx.peer_dir()
+            run_all(args)
+        results = {"date": datetime.date.today().isoformat(),
+                   "command": " ".join(sys.argv),
+                   "build": build_label(args.build_label),
+                   "ccx": ccx_version(),
+                   "threads": 1}
+        if "column" in args.cases:
+            results["column"] = analyse_column(args)
+        if "cube" in args.cases:
+            results["cube"] = analyse_cube(args)
+    except (run.RunError, OSError, ValueError) as err:
+        print("compare: %s" % err, file=sys.stderr)
+        return 1
+    with open(os.path.join(HERE, "results.json"), "w") as f:
+        json.dump(results, f, indent=1)
+    write_reports(results)
+    plot(results)
+    print("wrote results.json, results.md")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
