@@ -3,8 +3,8 @@
 
     ./compare.py [--cases column cube] [-sizes 6 12] [--cube-sizes 16 32]
                  [--elements C3D8R C3D8] [--cube-elements C3D8 C3D8R]
-                 [--settings default CFL0.6 CFL0.7 RK3-CFL1.0 linear-CFL0.7]
-                 [--cube-settings default CFL0.7 RK3-CFL1.0]
+                 [--settings default limitedLinear-RK2-CFL0.3 ...]
+                 [--cube-settings default linear-RK2-CFL0.7 ...]
                  [--reference 330.7] [--band 328.9 332.6]
                  [--reference-size 24] [--build-label LABEL] [--no-run]
 
@@ -29,10 +29,10 @@ column  tutorials/twistingColumn, n x 6n x n cells or C3D8R/C3D8 elements,
         so each point's angle is taken on the branch nearest the reference
         (valid while the error is below 180 deg; on 6x36x6 it equals
         column_twist's unwrapping of 0.01 s writes).  touchFoam settings
-        (--settings; SETTINGS below): the tutorial as it is (RK2, CFL 0.3,
-        solidMonitor every step, writes every 0.05 s) and faster ones with
-        the monitor off and one write at 0.1 s (and, not in the brief, the
-        unlimited reconstruction).  For each mesh: the
+        (--settings; SETTINGS below): the tutorial as it is (linear, RK3,
+        CFL 0.8, solidMonitor every step, writes every 0.05 s) and others
+        spelt out in full (reconstruction, time scheme, CFL) with the
+        monitor off and one write at 0.1 s.  For each mesh: the
         fastest touchFoam setting whose error is at most CalculiX's, and
         the ratio of the wall times.
 cube    tutorials/swingingCube on N^3 cells or C3D8/C3D8R elements, to
@@ -97,17 +97,23 @@ NEVER = 1000000000       # an interval that is never reached
 #: solidMonitor off (executeInterval and writeInterval: it computes in
 #: execute(), so writeInterval alone would leave it running every step) and
 #: writes the fields at the end time only
-SETTINGS = {
-    "default": {"touch": {}, "quiet": False},
-    "CFL0.6": {"touch": {"CFL": 0.6}, "quiet": True},
-    "CFL0.7": {"touch": {"CFL": 0.7}, "quiet": True},
-    "RK3-CFL1.0": {"touch": {"timeScheme": "RK3", "CFL": 1.0}, "quiet": True},
-    # Not in the brief: the column's tutorial limits its reconstruction
-    # (limitedLinear), the cube's does not (linear); unlimited, the column
-    # twists the same to 0.1 deg in 53-56 % of the time (6x36x6, 12x72x12)
-    "linear-CFL0.7": {"touch": {"reconstruction": "linear", "CFL": 0.7},
-                      "quiet": True},
-}
+def spelt_out(reconstruction, scheme, cfl):
+    """A setting named and given by its reconstruction, time scheme and CFL
+    number, monitor off."""
+    return ("%s-%s-CFL%.1f" % (reconstruction, scheme, cfl),
+            {"touch": {"reconstruction": reconstruction, "timeScheme": scheme,
+                       "CFL": cfl}, "quiet": True})
+
+
+#: The tutorial as it is (linear, RK3, CFL 0.8 since issue 11) with the
+#: solidMonitor every step, the tutorials' former setting (limitedLinear,
+#: RK2, CFL 0.3), and the points of validation/accuracyVsCost's front
+SETTINGS = dict(
+    [("default", {"touch": {}, "quiet": False})]
+  + [spelt_out(*s) for s in (
+        ("limitedLinear", "RK2", 0.3), ("linear", "RK2", 0.6),
+        ("linear", "RK2", 0.7), ("linear", "RK3", 0.8),
+        ("linear", "RK3", 1.0))])
 
 
 def describe(setting):
@@ -865,7 +871,8 @@ def main():
     parser.add_argument("--settings", nargs="+", choices=list(SETTINGS),
                         default=list(SETTINGS))
     parser.add_argument("--cube-settings", nargs="+", choices=list(SETTINGS),
-                        default=["default", "CFL0.7", "RK3-CFL1.0"])
+                        default=["default", "linear-RK2-CFL0.7",
+                                 "linear-RK3-CFL1.0"])
     parser.add_argument("--reference", type=float, default=REFERENCE,
                         help="reference twist at 0.1 s [deg]")
     parser.add_argument("--band", type=float, nargs=2, default=list(BAND),

@@ -151,6 +151,31 @@ inline Foam::scalar Foam::linearReconstruction::factor
 }
 
 
+template<class Type>
+inline Type Foam::linearReconstruction::factors
+(
+    const Type& up,
+    const Type& down,
+    const Type& largestUp,
+    const Type& largestDown,
+    const scalar tolerance
+) const
+{
+    Type phi;
+    for (direction i = 0; i < pTraits<Type>::nComponents; ++i)
+    {
+        setComponent(phi, i) =
+            factor
+            (
+                component(up, i), component(down, i),
+                component(largestUp, i), component(largestDown, i),
+                tolerance
+            );
+    }
+    return phi;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::linearReconstruction::linearReconstruction
@@ -460,27 +485,14 @@ void Foam::linearReconstruction::update
             }
         }
 
-        vector phip;
-        for (direction i = 0; i < vector::nComponents; ++i)
-        {
-            phip[i] =
-                factor
-                (
-                    pMax[i] - pc[i], pMin[i] - pc[i], pUp[i], pDown[i],
-                    pTolerance
-                );
-        }
-
-        tensor phiP;
-        for (direction i = 0; i < tensor::nComponents; ++i)
-        {
-            phiP[i] =
-                factor
-                (
-                    PMax[i] - Pc[i], PMin[i] - Pc[i], PUp[i], PDown[i],
-                    PTolerance
-                );
-        }
+        const vector phip
+        (
+            factors(pMax - pc, pMin - pc, pUp, pDown, pTolerance)
+        );
+        const tensor phiP
+        (
+            factors(PMax - Pc, PMin - Pc, PUp, PDown, PTolerance)
+        );
 
         momentumLimiter_[c] = phip;
 
