@@ -69,7 +69,7 @@ Foam::kinematicPointConstraints::kinematicPointConstraints(const fvMesh& mesh)
 {
     // A point of this rank on another rank's boundary face is constrained
     // too: mark the boundary points, then combine the marks
-    boolList onBoundary(mesh.nPoints(), false);
+    labelList onBoundary(mesh.nPoints(), 0);
 
     for (const fvPatch& patch : mesh.boundary())
     {
@@ -79,15 +79,15 @@ Foam::kinematicPointConstraints::kinematicPointConstraints(const fvMesh& mesh)
             {
                 for (const label pointi : f)
                 {
-                    onBoundary[pointi] = true;
+                    onBoundary[pointi] = 1;
                 }
             }
         }
     }
 
-    syncTools::syncPointList(mesh, onBoundary, orEqOp<bool>(), false);
+    syncTools::syncPointList(mesh, onBoundary, maxEqOp<label>(), label(0));
 
-    boundaryPoints_ = findIndices(onBoundary, true);
+    boundaryPoints_ = findIndices(onBoundary, 1);
 
     forAll(boundaryPoints_, b)
     {
