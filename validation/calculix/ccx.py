@@ -8,6 +8,7 @@ read back from CalculiX's files is read here:
     column_deck      gen_column.py: n x 6n x n twisting column to t_end
     cube_deck        gen_cube.py: N^3 swinging cube to 0.004 s, plus an
                      element print of the stresses at the last increment
+    version          'CalculiX 2.20', from ccx -v
     timed            run a command, return wall and CPU time of the process
     read_inp         node coordinates and element connectivity of a deck
     read_dat         the node and element prints of a .dat file
@@ -19,6 +20,7 @@ import os
 import re
 import resource
 import shutil
+import subprocess
 import time
 
 from touchfoam import run
@@ -50,6 +52,19 @@ def check_ccx():
     if shutil.which("ccx") is None:
         raise run.RunError("ccx (CalculiX) is not in the PATH: "
                            "bin/touchSetup --with-calculix installs it")
+
+
+def version():
+    """'CalculiX <version>' from ccx -v, or 'CalculiX (version unknown)'."""
+    try:
+        out = subprocess.run(["ccx", "-v"], capture_output=True,
+                                 text=True, timeout=30).stdout
+        for line in out.splitlines():
+            if "Version" in line:
+                return "CalculiX " + line.split("Version", 1)[1].strip()
+    except (OSError, subprocess.SubprocessError):
+        pass
+    return "CalculiX (version unknown)"
 
 
 def _generate(script, args, folder, env=None):
