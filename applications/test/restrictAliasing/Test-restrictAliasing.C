@@ -12,9 +12,9 @@ Description
     expressions through UList's __restrict__ data pointer: F.T() & F and
     other expressions that reuse a temporary's storage must equal the same
     products taken cell by cell, to round-off (1e-14 for entries of order
-    1: the miscompilation gave errors of order 1; with -march=native the
-    two paths may contract multiply-adds differently, 3e-16).  Fails when
-    the project is built without -D__restrict__= (etc/bashrc,
+    1: the miscompilation gave differences up to 0.08; with -march=native
+    the two paths may contract multiply-adds differently, 3e-16).  Fails
+    when the project is built without -D__restrict__= (etc/bashrc,
     FOAM_EXTRA_CXXFLAGS).
 
 Usage
