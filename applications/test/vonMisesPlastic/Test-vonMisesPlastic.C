@@ -571,42 +571,7 @@ int main(int argc, char *argv[])
     }
 
 
-    // (f) A failed step returns the state bit for bit
-    Info<< nl << "(f) Failed-step restore" << nl;
-    {
-        const volSymmTensorField CpInvN("CpInvN", plastic.CpInv());
-        const volScalarField epsN("epsN", plastic.epsilonP());
-        const tensorField F0(Fi);
-
-        law.storeOldTime();
-        for (const scalar alpha : {0.0, 0.75, 1.0/3.0})
-        {
-            forAll(Fi, celli)
-            {
-                Fi[celli] = randomF(rnd, 0.05) & Fi[celli];
-            }
-            law.correct(F, P);
-            law.advanceStage(alpha);
-        }
-        const label nChanged =
-            nDifferent(plastic.CpInv(), CpInvN)
-          + nDifferent(plastic.epsilonP(), epsN);
-        Info<< "    the stages changed " << nChanged << " components" << nl;
-        report.check("the stages changed the state", nChanged > 0);
-
-        law.restoreOldTime();
-        Fi = F0;
-        report.check
-        (
-            "restoreOldTime: differing components of CpInv and epsilonP",
-            scalar
-            (
-                nDifferent(plastic.CpInv(), CpInvN)
-              + nDifferent(plastic.epsilonP(), epsN)
-            ),
-            0
-        );
-    }
+    checkRestore(law, plastic, rnd, F, P, report);
 
     lawPtr.clear();
 
@@ -614,49 +579,7 @@ int main(int argc, char *argv[])
     checkUniaxial(mesh, rnd, F, P, report);
 
 
-    // (g) Bad entries stop with an error naming the file, the entry and
-    // the range
-    Info<< nl << "(g) Entries checked" << nl;
-    FatalError.throwExceptions();
-    FatalIOError.throwExceptions();
-
-    auto errorMessage = [&](const dictionary& dict)
-    {
-        return errorMessageOf([&]() { mechanicalLaw::New(mesh, dict); });
-    };
-
-    {
-        const string msg(errorMessage(material(0, H)));
-        Info<< "    yieldStress 0 gives: " << msg.c_str() << nl;
-        report.check
-        (
-            "yieldStress 0 is refused naming the file, entry and range",
-            msg.find("'yieldStress'") != string::npos
-         && msg.find("mechanicalProperties") != string::npos
-         && msg.find("0 < yieldStress") != string::npos
-        );
-    }
-    {
-        const string msg(errorMessage(material(sigmaY, -1)));
-        Info<< "    hardeningModulus -1 gives: " << msg.c_str() << nl;
-        report.check
-        (
-            "hardeningModulus -1 is refused naming the file, entry and range",
-            msg.find("'hardeningModulus'") != string::npos
-         && msg.find("mechanicalProperties") != string::npos
-         && msg.find("0 <= hardeningModulus") != string::npos
-        );
-    }
-    {
-        dictionary dict(material(sigmaY, H));
-        dict.remove("yieldStress");
-        const string msg(errorMessage(dict));
-        report.check
-        (
-            "a missing yieldStress is refused naming it",
-            msg.find("'yieldStress'") != string::npos
-        );
-    }
+    checkEntries(mesh, report);
 
     // Exit here: the status must not be lost in argList's destructor
     Pstream::exit(report.result("Test-vonMisesPlastic"));
