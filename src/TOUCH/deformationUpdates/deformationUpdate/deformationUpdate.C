@@ -106,7 +106,9 @@ Foam::deformationUpdate::deformationUpdate
     riemann_(riemann),
     shares_(faces.mesh()),
     pC_(faces.mesh().boundary().size()),
-    tC_(faces.mesh().boundary().size())
+    tC_(faces.mesh().boundary().size()),
+    rigidSpin_(Zero),
+    pointDisplacement_(nullptr)
 {
     forAll(faces.mesh().boundary(), patchi)
     {
@@ -116,6 +118,32 @@ Foam::deformationUpdate::deformationUpdate
         pC_.set(patchi, new vectorField(n, Zero));
         tC_.set(patchi, new vectorField(n, Zero));
     }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::deformationUpdate::boundaryPower() const
+{
+    scalar power = 0;
+
+    forAll(pC_, patchi)
+    {
+        const vectorField& pC = pC_[patchi];
+        const vectorField& tC = tC_[patchi];
+
+        if (pC.size())
+        {
+            const scalarField& magSf = faces_.mesh().boundary()[patchi].magSf();
+
+            forAll(pC, i)
+            {
+                power += (pC[i] & tC[i])*magSf[i];
+            }
+        }
+    }
+
+    return power/law_.rho();
 }
 
 
