@@ -17,7 +17,8 @@ On a 4^3 swinging cube, one mistake at a time:
     the error lists the condition's valid keywords,
   - a misspelt F update (FUpdate compatibel) and time scheme (timeScheme
     RK4) in system/fvSolution TOUCH,
-  - model vonMisesPlastic with yieldStress 0, and with hardeningModulus -1.
+  - model vonMisesPlastic with yieldStress 0, and with hardeningModulus -1,
+  - nodalAveraging on with vonMisesPlastic (a law with state).
 Each run must exit non-zero, its log must contain every expected word, and
 no time folder may be written.  Every mistake is tried; the failure names
 all that were not refused properly.
@@ -87,6 +88,12 @@ MISTAKES = [
       "model vonMisesPlastic;\nyieldStress 1e4;\nhardeningModulus -1;"),
      ["'hardeningModulus'", "mechanicalProperties",
       "0 <= hardeningModulus"]),
+    ("nodalAveraging", ["constant/mechanicalProperties", "system/fvSolution"],
+     [(r"model\s+\w+;",
+       "model vonMisesPlastic;\nyieldStress 1e4;\nhardeningModulus 0;"),
+      (r"(CFL\s+[0-9.]+;)", r"\1\n    nodalAveraging on;")],
+     ["'nodalAveraging on'", "fvSolution", "vonMisesPlastic",
+      "nodalAveraging off"]),
 ]
 
 
@@ -94,15 +101,19 @@ def check(root, label, path, edit, words):
     # limitedLinear, so that the limiter is read
     case = cases.prepare("swingingCube", os.path.join(root, label), n=4,
                          touch={"reconstruction": "limitedLinear"})
-    target = os.path.join(case, path)
-    with open(target) as f:
-        text = f.read()
-    new, count = re.subn(edit[0], edit[1], text, count=1)
-    if count != 1:
-        raise AssertionError("%s: could not make the mistake in %s"
-                             % (label, path))
-    with open(target, "w") as f:
-        f.write(new)
+    # One file and one edit, or a list of files with an edit each
+    paths = path if isinstance(path, list) else [path]
+    edits = edit if isinstance(edit, list) else [edit]
+    for one_path, one_edit in zip(paths, edits):
+        target = os.path.join(case, one_path)
+        with open(target) as f:
+            text = f.read()
+        new, count = re.subn(one_edit[0], one_edit[1], text, count=1)
+        if count != 1:
+            raise AssertionError("%s: could not make the mistake in %s"
+                                 % (label, one_path))
+        with open(target, "w") as f:
+            f.write(new)
     log = os.path.join(case, "log.touchFoam")
     with open(log, "w") as f:
         status = subprocess.call(["touchFoam"], cwd=case, stdout=f,

@@ -35,12 +35,14 @@ TWIST_TOL = 0.10
 PYTHON = "/usr/bin/python3"
 
 
-def column(root, label, n=4, nu=None, cfl=None, end=0.3, mesh="hex"):
+def column(root, label, n=4, nu=None, cfl=None, end=0.3, mesh="hex",
+           extra=None):
     """Run a twisting column; returns (largest energy change per step / E0,
-    twist at 0.1 s in degrees)."""
+    twist at 0.1 s in degrees).  extra: more TOUCH entries."""
     case = os.path.join(root, label)
     touch = {"reconstruction": "limitedLinear", "timeScheme": "RK2",
              "CFL": 0.3 if cfl is None else cfl}
+    touch.update(extra or {})
     cases.prepare("twistingColumn", case, n=n, nu=nu, touch=touch,
                   control={"endTime": end, "writeInterval": 0.01},
                   initialise=(mesh == "hex"))

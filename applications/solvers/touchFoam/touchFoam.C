@@ -55,6 +55,33 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
 
+    // A restart continues from the exact time of the run that wrote it:
+    // the time folder's name is rounded to timePrecision, its
+    // uniform/time value is not (OpenFOAM takes the name when they agree
+    // to that precision, and a restarted run's times then drift from the
+    // uninterrupted one's by up to half a unit of the last digit)
+    {
+        IOdictionary timeDict
+        (
+            IOobject
+            (
+                "time",
+                runTime.timeName(),
+                "uniform",
+                runTime,
+                IOobject::READ_IF_PRESENT,
+                IOobject::NO_WRITE,
+                false
+            )
+        );
+
+        scalar storedValue = 0;
+        if (timeDict.readIfPresent("value", storedValue))
+        {
+            runTime.setTime(storedValue, runTime.timeIndex());
+        }
+    }
+
     touchSolid solid(mesh);
 
     const label maxSteps =

@@ -95,6 +95,7 @@ Foam::solidFaces::solidFaces
     sizeBuffers(mesh, gradPyN_, coupled);
     sizeBuffers(mesh, gradPzN_, coupled);
     sizeBuffers(mesh, XN_, coupled);
+    sizeBuffers(mesh, uN_, coupled);
 
     sizeBuffers(mesh, pM_, solid);
     sizeBuffers(mesh, tM_, solid);
@@ -132,6 +133,7 @@ void Foam::solidFaces::update()
         }
 
         lmN_[patchi] = lm_.boundaryField()[patchi].patchNeighbourField();
+        uN_[patchi] = u_.boundaryField()[patchi].patchNeighbourField();
         FN_[patchi] = F_.boundaryField()[patchi].patchNeighbourField();
         PN_[patchi] = P_.boundaryField()[patchi].patchNeighbourField();
         gradLmN_[patchi] =

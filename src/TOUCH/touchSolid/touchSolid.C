@@ -41,6 +41,47 @@ static IOobject fieldIO
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
+Foam::autoPtr<Foam::nodalAveraging> Foam::touchSolid::selectNodalAveraging
+(
+    const fvMesh& mesh,
+    const dictionary& controls,
+    const mechanicalLaw& law
+)
+{
+    const bool on = controls.getOrDefault<Switch>("nodalAveraging", false);
+
+    if (on && law.hasState())
+    {
+        FatalIOErrorInFunction(controls)
+            << "Entry 'nodalAveraging on' in " << controls.name()
+            << " needs a law without internal state; model " << law.type()
+            << " keeps its state in the cells." << nl
+            << "Valid: nodalAveraging off, or a stateless model (linearElastic,"
+            << " neoHookean)" << nl
+            << exit(FatalIOError);
+    }
+
+    if (!on)
+    {
+        const label nTets =
+            returnReduce(nodalAveraging::nTetrahedra(mesh), sumOp<label>());
+
+        if (nTets)
+        {
+            WarningInFunction
+                << nTets << " of " << returnReduce(mesh.nCells(), sumOp<label>())
+                << " cells are tetrahedra, which lock in bending and torsion"
+                << " without 'nodalAveraging on;' in " << controls.name()
+                << endl;
+        }
+
+        return nullptr;
+    }
+
+    return autoPtr<nodalAveraging>::New(mesh);
+}
+
+
 void Foam::touchSolid::checkInput() const
 {
     if (lm_.dimensions() != dimDensity*dimVelocity)
@@ -87,7 +128,17 @@ void Foam::touchSolid::computeRates(const label stage)
     // limited gradients (exchanged as well)
     lm_.correctBoundaryConditions();
     F_.correctBoundaryConditions();
+    if (preserveAngularMomentum_)
+    {
+        // The cell positions across processor faces (the rigid spin)
+        u_.correctBoundaryConditions();
+    }
     law_->correct(F_, P_);
+    if (nodalAveraging_)
+    {
+        nodalAveraging_->stress(*law_, F_.primitiveField(), P_.primitiveFieldRef());
+        P_.correctBoundaryConditions();
+    }
     reconstruction_.update(lm_, P_);
     faces_.update();
 
@@ -98,7 +149,7 @@ void Foam::touchSolid::computeRates(const label stage)
     if (preserveAngularMomentum_)
     {
         // The body's spin, with which the update turns the points' drift
-        u_.correctBoundaryConditions();
+        // and which its upwinding leaves alone
         update_->setRigidSpin
         (
             angularMomentum_.spin
@@ -179,6 +230,7 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     (
         controls_.get<Switch>("angularMomentumPreservation")
     ),
+    nodalAveraging_(selectNodalAveraging(mesh, controls_, *law_)),
     rungeKutta_(controls_),
     lm_
     (
@@ -428,6 +480,11 @@ Foam::scalar Foam::touchSolid::kineticEnergy() const
 
 Foam::scalar Foam::touchSolid::strainEnergy() const
 {
+    if (nodalAveraging_)
+    {
+        return nodalAveraging_->totalStrainEnergy(*law_, F_.primitiveField());
+    }
+
     return law_->totalStrainEnergy(F_);
 }
 
@@ -474,7 +531,8 @@ void Foam::touchSolid::writeSummary(Ostream& os) const
         << "                    " << rungeKutta_.name() << " ("
         << rungeKutta_.nStages() << "-stage SSP Runge-Kutta), F update "
         << update_->type() << ", angular momentum preservation "
-        << (preserveAngularMomentum_ ? "on" : "off") << nl;
+        << (preserveAngularMomentum_ ? "on" : "off")
+        << ", nodal averaging " << (nodalAveraging_ ? "on" : "off") << nl;
 }
 
 
@@ -500,6 +558,10 @@ void Foam::touchSolid::writeOutputFields() const
     // last stage's)
     volTensorField P(outputIO("P"), P_);
     law_->stress(F_.primitiveField(), P.primitiveFieldRef());
+    if (nodalAveraging_)
+    {
+        nodalAveraging_->stress(*law_, F_.primitiveField(), P.primitiveFieldRef());
+    }
     P.write();
 
     volVectorField v(outputIO("v"), lm_/rho);

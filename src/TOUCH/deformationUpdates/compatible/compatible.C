@@ -91,8 +91,14 @@ void Foam::deformationUpdates::compatible::addUpwindRate
 
             // The central traction is the point coupling's; the upwind
             // part damps the share of the cell jump the reconstruction
-            // keeps: the flux of the jump alone
-            const vector jump(face.right.lm - face.left.lm);
+            // keeps: the flux of the jump alone. With preservation, less
+            // the jump of the body's rigid spin (zero otherwise), which no
+            // reconstruction keeps and which the upwinding must not damp
+            const vector jump
+            (
+                face.right.lm - face.left.lm
+              - (rigidSpin_ ^ (face.right.x() - face.left.x()))
+            );
             const vector tC
             (
                 face.magSf
