@@ -6,7 +6,7 @@
     ./stabilityMap.py [--n 2 3 4 8] [--nu 0.45 0.499 0.4999]
                       [--cfl 0.3 0.5 0.6 0.7 0.9]
                       [--update compatible constrained plain]
-                      [--scheme RK2 RK3] [--mesh hex poly]
+                      [--scheme RK2 RK3] [--mesh hex poly tet]
                       [--end 0.3] [--jobs 1] [--no-run] [--list]
 
 Runs a copy of tutorials/twistingColumn (neo-Hookean, Omega = 105 rad/s,
@@ -17,8 +17,10 @@ solidMonitor every step.
 
     --n       mesh n x 6n x n (hex) or the polyhedral dual of it (poly)
     --mesh    hex: blockMesh; poly: blockMesh, then
-              'polyDualMesh 80 -overwrite -concaveMultiCells', 0/ restored
-              from 0.orig and initialised again on the dual cells
+              'polyDualMesh 80 -overwrite -concaveMultiCells'; tet: the hex
+              mesh cut into 6 tetrahedra a hexahedron (gmsh.py,
+              gmshToFoam), run with nodalAveraging on; 0/ restored
+              from 0.orig and initialised again on the new cells
     --update  TOUCH FUpdate;  --scheme  TOUCH timeScheme;  --cfl  TOUCH CFL
     --nu      Poisson's ratio (constant/materialOptions)
     --preset  a named list of grids (quick, baseline; --quick = --preset
@@ -63,7 +65,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
 
-from touchfoam import cases, postprocess, run  # noqa: E402
+from touchfoam import cases, gmsh, postprocess, run  # noqa: E402
 from touchfoam.foamfile import read_field  # noqa: E402
 from touchfoam.mesh import PolyMesh  # noqa: E402
 from touchfoam.monitor import read_monitor  # noqa: E402
@@ -99,14 +101,19 @@ PRESETS = {
         grid(mesh=["poly"], n=[4], nu=[0.45], cfl=[0.3],
              update=["compatible"], scheme=["RK2"]),
     ],
-    # The default update across CFL and mesh size, nu -> 0.5, polyhedra
+    # The default update across CFL and mesh size, nu -> 0.5, polyhedra,
+    # tetrahedra
     "baseline": [
         grid(mesh=["hex"], n=[2, 4, 8], nu=[0.45], cfl=[0.3, 0.5, 0.6, 0.7],
              update=["compatible"], scheme=["RK2", "RK3"]),
         grid(mesh=["hex"], n=[4], nu=[0.499, 0.4999], cfl=[0.3],
              update=["compatible"], scheme=["RK2", "RK3"]),
+        grid(mesh=["hex"], n=[8], nu=[0.499, 0.4999], cfl=[0.3],
+             update=["compatible"], scheme=["RK2"]),
         grid(mesh=["poly"], n=[6], nu=[0.45], cfl=[0.3],
              update=["compatible"], scheme=["RK2", "RK3"]),
+        grid(mesh=["tet"], n=[4], nu=[0.45], cfl=[0.3, 0.5, 0.7],
+             update=["compatible"], scheme=["RK2"]),
     ],
 }
 
@@ -191,14 +198,28 @@ def prepare(s, end):
     control.update({"endTime": end, "writeInterval": WRITE_INTERVAL})
     touch = {"CFL": s["cfl"], "FUpdate": s["update"],
              "timeScheme": s["scheme"]}
-    poly = s["mesh"] == "poly"
+    if s["mesh"] == "tet":
+        # The setting for tetrahedra (src/TOUCH/nodalAveraging)
+        touch["nodalAveraging"] = "on"
+    hex_mesh = s["mesh"] == "hex"
     cases.prepare(TUTORIAL, case, n=s["n"], nu=s["nu"], touch=touch,
-                  control=control, initialise=not poly)
-    if poly:
+                  control=control, initialise=hex_mesh)
+    if s["mesh"] == "poly":
         # polyDualMesh maps 0/ onto the dual cells (and keeps the patches
-        # base and free); the initial lm depends on the cell centres, so
-        # 0/ is restored and initialised again on the new cells
+        # base and free)
         run.run(POLY_DUAL, case)
+    elif s["mesh"] == "tet":
+        # The same n x 6n x n hexahedra cut into 6 tetrahedra each
+        faces = {f: "free" for f in gmsh.PATCHES}
+        faces["Y0"] = "base"
+        n = s["n"]
+        gmsh.write_box_msh(os.path.join(case, "column.msh"), (n, 6 * n, n),
+                           (-0.5, 0.0, -0.5), (0.5, 6.0, 0.5), faces,
+                           "column")
+        run.run(["gmshToFoam", "column.msh"], case)
+    if not hex_mesh:
+        # the initial lm depends on the cell centres: 0/ is restored and
+        # initialised again on the new cells
         run.restore0(case)
         run.run([run.PYTHON, "initialise.py"], case, "initialise")
     run.run(["checkMesh"], case)
@@ -397,7 +418,8 @@ def block(rows, out):
         "%g s." % (out["command"], out["date"], b["label"],
                    (b["libTOUCHmd5"] or "?")[:12], out["endTime"]),
         "",
-        "Columns: `n`: hex n x 6n x n, poly its polyDualMesh; `reached`: the "
+        "Columns: `n`: hex n x 6n x n, poly its polyDualMesh, tet its hexahedra "
+        "cut into 6 tetrahedra each (nodalAveraging on); `reached`: the "
         "end time, else the last time touchFoam reached before stopping; "
         "`dE/E0 max`: the largest growth of the monitor's total energy in one "
         "step over E0, the kinetic energy of 0/lm (<= 0: never grows); "
@@ -447,7 +469,7 @@ def parse(argv):
     p.add_argument("--update", nargs="+",
                    choices=["compatible", "constrained", "plain"])
     p.add_argument("--scheme", nargs="+", choices=["RK2", "RK3"])
-    p.add_argument("--mesh", nargs="+", choices=["hex", "poly"])
+    p.add_argument("--mesh", nargs="+", choices=["hex", "poly", "tet"])
     p.add_argument("--preset", choices=sorted(PRESETS))
     p.add_argument("--quick", action="store_const", const="quick",
                    dest="preset", help="= --preset quick")
