@@ -35,37 +35,56 @@ Foam::vector Foam::angularMomentum::total
 }
 
 
+template<class Momentum>
+Foam::angularMomentum::rigidMoments Foam::angularMomentum::moments
+(
+    const vectorField& x,
+    const Momentum& q
+) const
+{
+    scalar volume = 0;
+    vector moment(Zero);
+    symmTensor second(Zero);
+    rigidMoments m{0, Zero, Zero, Zero, Zero, 0};
+
+    forAll(V_, a)
+    {
+        const vector qa(q(a));
+        volume += V_[a];
+        moment += V_[a]*x[a];
+        second += V_[a]*sqr(x[a]);
+        m.Q += V_[a]*qa;
+        m.L += V_[a]*(x[a] ^ qa);
+        m.Q2 += V_[a]*magSqr(qa);
+    }
+
+    reduce(volume, sumOp<scalar>());
+    reduce(moment, sumOp<vector>());
+    reduce(second, sumOp<symmTensor>());
+    reduce(m.Q, sumOp<vector>());
+    reduce(m.L, sumOp<vector>());
+    reduce(m.Q2, sumOp<scalar>());
+
+    m.volume = volume;
+    m.xbar = moment/volume;
+
+    // J = sum V (|d|^2 I - d d) about the centroid
+    const symmTensor dd(second - volume*sqr(m.xbar));
+    m.Jinv = inv(symmTensor(tr(dd)*symmTensor::I - dd));
+
+    return m;
+}
+
+
 Foam::vector Foam::angularMomentum::spin
 (
     const vectorField& x,
     const vectorField& p
 ) const
 {
-    scalar volume = 0;
-    vector moment(Zero);
-    symmTensor second(Zero);
-    vector Q(Zero);
-    vector L(Zero);
+    const rigidMoments m(moments(x, [&](const label a) { return p[a]; }));
 
-    forAll(V_, a)
-    {
-        volume += V_[a];
-        moment += V_[a]*x[a];
-        second += V_[a]*sqr(x[a]);
-        Q += V_[a]*p[a];
-        L += V_[a]*(x[a] ^ p[a]);
-    }
-
-    reduce(volume, sumOp<scalar>());
-    reduce(moment, sumOp<vector>());
-    reduce(second, sumOp<symmTensor>());
-    reduce(Q, sumOp<vector>());
-    reduce(L, sumOp<vector>());
-
-    const vector xbar(moment/volume);
-    const symmTensor dd(second - volume*sqr(xbar));
-
-    return inv(symmTensor(tr(dd)*symmTensor::I - dd)) & (L - (xbar ^ Q));
+    return m.Jinv & (m.L - (m.xbar ^ m.Q));
 }
 
 
@@ -100,37 +119,18 @@ void Foam::angularMomentum::correct
 ) const
 {
     // Global sums: volume, first and second moments of the lever arms, the
-    // linear momentum and twice rho times the kinetic energy of the
-    // uncorrected update q = pBase + c r
-    scalar volume = 0;
-    vector moment(Zero);
-    symmTensor second(Zero);
-    vector Q(Zero);
-    scalar Q2 = 0;
-
-    forAll(V_, a)
-    {
-        const vector q(pBase[a] + c*r[a]);
-        volume += V_[a];
-        moment += V_[a]*x[a];
-        second += V_[a]*sqr(x[a]);
-        Q += V_[a]*q;
-        Q2 += V_[a]*magSqr(q);
-    }
-
-    reduce(volume, sumOp<scalar>());
-    reduce(moment, sumOp<vector>());
-    reduce(second, sumOp<symmTensor>());
-    reduce(Q, sumOp<vector>());
-    reduce(Q2, sumOp<scalar>());
-
-    const vector xbar(moment/volume);
-
-    // J = sum V (|d|^2 I - d d) about the centroid
-    const symmTensor dd(second - volume*sqr(xbar));
-    const symmTensor Jinv(inv(symmTensor(tr(dd)*symmTensor::I - dd)));
-
-    vector Lupdate(updateMomentum(x, pBase, c, r));
+    // linear and angular momenta and twice rho times the kinetic energy of
+    // the uncorrected update q = pBase + c r
+    const rigidMoments m
+    (
+        moments(x, [&](const label a) { return pBase[a] + c*r[a]; })
+    );
+    const scalar volume = m.volume;
+    const vector& xbar = m.xbar;
+    const symmTensor& Jinv = m.Jinv;
+    const vector& Q = m.Q;
+    const scalar Q2 = m.Q2;
+    vector Lupdate(m.L);
 
     // The rigid part of q (its mean and its spin about the centroid); the
     // rest, w, carries neither linear nor angular momentum. Its mean is
