@@ -18,7 +18,8 @@ On a 4^3 swinging cube, one mistake at a time:
   - a misspelt F update (FUpdate compatibel) and time scheme (timeScheme
     RK4) in system/fvSolution TOUCH,
   - model vonMisesPlastic with yieldStress 0, and with hardeningModulus -1,
-  - nodalAveraging on with vonMisesPlastic (a law with state).
+  - a misspelt nodalAveraging (pressur), and nodalAveraging deformation
+    with vonMisesPlastic (a law with state).
 Each run must exit non-zero, its log must contain every expected word, and
 no time folder may be written.  Every mistake is tried; the failure names
 all that were not refused properly.
@@ -88,11 +89,15 @@ MISTAKES = [
       "model vonMisesPlastic;\nyieldStress 1e4;\nhardeningModulus -1;"),
      ["'hardeningModulus'", "mechanicalProperties",
       "0 <= hardeningModulus"]),
-    ("nodalAveraging", ["constant/mechanicalProperties", "system/fvSolution"],
+    ("nodalAveraging", "system/fvSolution",
+     (r"(CFL\s+[0-9.]+;)", r"\1\n    nodalAveraging pressur;"),
+     ["pressur", "fvSolution", "off", "deformation", "pressure"]),
+    ("nodalAveragingLaw",
+     ["constant/mechanicalProperties", "system/fvSolution"],
      [(r"model\s+\w+;",
        "model vonMisesPlastic;\nyieldStress 1e4;\nhardeningModulus 0;"),
-      (r"(CFL\s+[0-9.]+;)", r"\1\n    nodalAveraging on;")],
-     ["'nodalAveraging on'", "fvSolution", "vonMisesPlastic",
+      (r"(CFL\s+[0-9.]+;)", r"\1\n    nodalAveraging deformation;")],
+     ["'nodalAveraging deformation'", "fvSolution", "vonMisesPlastic",
       "nodalAveraging off"]),
 ]
 

@@ -7,7 +7,7 @@ hexahedra, polyhedra and tetrahedra (issue 9).
 tutorials/spinningCube (translating and spinning about a tilted axis, all
 faces traction-free, angular momentum preservation on, default scheme) on
 6^3 hexahedra, their polyhedral dual (polyDualMesh) and 4^3 hexahedra cut
-into 6 tetrahedra each, the tetrahedra once more with nodalAveraging on,
+into 6 tetrahedra each, the tetrahedra once more with nodalAveraging deformation,
 for 1000 steps; from the solidMonitor (every step, 17 digits):
     linear drift   max_n |P_n - P_0| / |P_0|  <= 1e-12,
     angular drift  max_n |L_n - L_0| / |L_0|  <= 1e-10,
@@ -35,7 +35,7 @@ def spin(root, label, steps):
     control = cases.precise_output()
     control.update({"maxSteps": steps, "endTime": 100,
                     "writeControl": "timeStep", "writeInterval": steps})
-    touch = {"nodalAveraging": "on"} if label == "tetNodal" else None
+    touch = {"nodalAveraging": "deformation"} if label == "tetNodal" else None
     cases.prepare("spinningCube", case, n=6 if mesh != "tet" else 4,
                   control=control, initialise=(mesh == "hex"), touch=touch)
     if mesh == "poly":

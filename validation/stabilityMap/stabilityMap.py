@@ -19,7 +19,7 @@ solidMonitor every step.
     --mesh    hex: blockMesh; poly: blockMesh, then
               'polyDualMesh 80 -overwrite -concaveMultiCells'; tet: the hex
               mesh cut into 6 tetrahedra a hexahedron (gmsh.py,
-              gmshToFoam), run with nodalAveraging on; 0/ restored
+              gmshToFoam), run with nodalAveraging deformation; 0/ restored
               from 0.orig and initialised again on the new cells
     --update  TOUCH FUpdate;  --scheme  TOUCH timeScheme;  --cfl  TOUCH CFL
     --nu      Poisson's ratio (constant/materialOptions)
@@ -200,7 +200,7 @@ def prepare(s, end):
              "timeScheme": s["scheme"]}
     if s["mesh"] == "tet":
         # The setting for tetrahedra (src/TOUCH/nodalAveraging)
-        touch["nodalAveraging"] = "on"
+        touch["nodalAveraging"] = "deformation"
     hex_mesh = s["mesh"] == "hex"
     cases.prepare(TUTORIAL, case, n=s["n"], nu=s["nu"], touch=touch,
                   control=control, initialise=hex_mesh)
@@ -419,7 +419,7 @@ def block(rows, out):
                    (b["libTOUCHmd5"] or "?")[:12], out["endTime"]),
         "",
         "Columns: `n`: hex n x 6n x n, poly its polyDualMesh, tet its hexahedra "
-        "cut into 6 tetrahedra each (nodalAveraging on); `reached`: the "
+        "cut into 6 tetrahedra each (nodalAveraging deformation); `reached`: the "
         "end time, else the last time touchFoam reached before stopping; "
         "`dE/E0 max`: the largest growth of the monitor's total energy in one "
         "step over E0, the kinetic energy of 0/lm (<= 0: never grows); "

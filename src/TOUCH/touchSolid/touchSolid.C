@@ -41,47 +41,6 @@ static IOobject fieldIO
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::nodalAveraging> Foam::touchSolid::selectNodalAveraging
-(
-    const fvMesh& mesh,
-    const dictionary& controls,
-    const mechanicalLaw& law
-)
-{
-    const bool on = controls.getOrDefault<Switch>("nodalAveraging", false);
-
-    if (on && law.hasState())
-    {
-        FatalIOErrorInFunction(controls)
-            << "Entry 'nodalAveraging on' in " << controls.name()
-            << " needs a law without internal state; model " << law.type()
-            << " keeps its state in the cells." << nl
-            << "Valid: nodalAveraging off, or a stateless model (linearElastic,"
-            << " neoHookean)" << nl
-            << exit(FatalIOError);
-    }
-
-    if (!on)
-    {
-        const label nTets =
-            returnReduce(nodalAveraging::nTetrahedra(mesh), sumOp<label>());
-
-        if (nTets)
-        {
-            WarningInFunction
-                << nTets << " of " << returnReduce(mesh.nCells(), sumOp<label>())
-                << " cells are tetrahedra, which lock in bending and torsion"
-                << " without 'nodalAveraging on;' in " << controls.name()
-                << endl;
-        }
-
-        return nullptr;
-    }
-
-    return autoPtr<nodalAveraging>::New(mesh);
-}
-
-
 void Foam::touchSolid::checkInput() const
 {
     if (lm_.dimensions() != dimDensity*dimVelocity)
@@ -136,7 +95,10 @@ void Foam::touchSolid::computeRates(const label stage)
     law_->correct(F_, P_);
     if (nodalAveraging_)
     {
-        nodalAveraging_->stress(*law_, F_.primitiveField(), P_.primitiveFieldRef());
+        nodalAveraging_->correct
+        (
+            *law_, F_.primitiveField(), P_.primitiveFieldRef()
+        );
         P_.correctBoundaryConditions();
     }
     reconstruction_.update(lm_, P_);
@@ -230,7 +192,7 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     (
         controls_.get<Switch>("angularMomentumPreservation")
     ),
-    nodalAveraging_(selectNodalAveraging(mesh, controls_, *law_)),
+    nodalAveraging_(nodalAveraging::New(mesh, controls_, *law_)),
     rungeKutta_(controls_),
     lm_
     (
@@ -482,7 +444,7 @@ Foam::scalar Foam::touchSolid::strainEnergy() const
 {
     if (nodalAveraging_)
     {
-        return nodalAveraging_->totalStrainEnergy(*law_, F_.primitiveField());
+        return nodalAveraging_->totalStrainEnergy(*law_, F_);
     }
 
     return law_->totalStrainEnergy(F_);
@@ -532,7 +494,8 @@ void Foam::touchSolid::writeSummary(Ostream& os) const
         << rungeKutta_.nStages() << "-stage SSP Runge-Kutta), F update "
         << update_->type() << ", angular momentum preservation "
         << (preserveAngularMomentum_ ? "on" : "off")
-        << ", nodal averaging " << (nodalAveraging_ ? "on" : "off") << nl;
+        << ", nodal averaging "
+        << (nodalAveraging_ ? nodalAveraging_->type() : word("off")) << nl;
 }
 
 
@@ -560,7 +523,10 @@ void Foam::touchSolid::writeOutputFields() const
     law_->stress(F_.primitiveField(), P.primitiveFieldRef());
     if (nodalAveraging_)
     {
-        nodalAveraging_->stress(*law_, F_.primitiveField(), P.primitiveFieldRef());
+        nodalAveraging_->correct
+        (
+            *law_, F_.primitiveField(), P.primitiveFieldRef()
+        );
     }
     P.write();
 

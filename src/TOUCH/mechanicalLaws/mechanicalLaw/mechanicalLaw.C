@@ -107,6 +107,26 @@ void Foam::mechanicalLaw::correct(const volTensorField& F, volTensorField& P)
 }
 
 
+Foam::scalar Foam::mechanicalLaw::volumetricEnergy(const scalar) const
+{
+    FatalErrorInFunction
+        << "Model " << type() << " has no volumetric part of J alone"
+        << exit(FatalError);
+
+    return 0;
+}
+
+
+Foam::scalar Foam::mechanicalLaw::volumetricStress(const scalar) const
+{
+    FatalErrorInFunction
+        << "Model " << type() << " has no volumetric part of J alone"
+        << exit(FatalError);
+
+    return 0;
+}
+
+
 Foam::scalar Foam::mechanicalLaw::totalStrainEnergy
 (
     const volTensorField& F

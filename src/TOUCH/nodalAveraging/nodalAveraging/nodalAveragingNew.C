@@ -1,0 +1,67 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+\*---------------------------------------------------------------------------*/
+
+#include "nodalAveraging.H"
+#include "mechanicalLaw.H"
+
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::nodalAveraging> Foam::nodalAveraging::New
+(
+    const fvMesh& mesh,
+    const dictionary& controls,
+    const mechanicalLaw& law
+)
+{
+    const word type(controls.getOrDefault<word>("nodalAveraging", "off"));
+
+    if (type == "off")
+    {
+        const label nTets = nTetrahedra(mesh);
+
+        if (nTets)
+        {
+            WarningInFunction
+                << nTets << " of " << returnReduce(mesh.nCells(), sumOp<label>())
+                << " cells are tetrahedra, which lock in bending and torsion"
+                << " without 'nodalAveraging deformation;' in "
+                << controls.name() << endl;
+        }
+
+        return nullptr;
+    }
+
+    auto cstrIter = meshConstructorTablePtr_->cfind(type);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInFunction(controls)
+            << "Unknown nodalAveraging '" << type << "' in "
+            << controls.name() << nl
+            << "Valid choices: off " << meshConstructorTablePtr_->sortedToc()
+            << nl << exit(FatalIOError);
+    }
+
+    autoPtr<nodalAveraging> average(cstrIter()(mesh));
+
+    if (!average->suits(law))
+    {
+        FatalIOErrorInFunction(controls)
+            << "Entry 'nodalAveraging " << type << "' in " << controls.name()
+            << " needs " << average->lawRequirement() << "; model "
+            << law.type() << " has not." << nl
+            << "Valid: nodalAveraging off, or another model" << nl
+            << exit(FatalIOError);
+    }
+
+    Info<< "Selecting nodal averaging " << type << endl;
+
+    return average;
+}
+
+
+// ************************************************************************* //
