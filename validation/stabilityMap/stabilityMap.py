@@ -2,7 +2,7 @@
 """Stability map of the twisting column: where the scheme holds and where not.
 
     ./stabilityMap.py --quick                       (5 runs, ~10 s)
-    ./stabilityMap.py --preset baseline             (30 runs, ~4 min)
+    ./stabilityMap.py --preset baseline             (35 runs, ~8 min)
     ./stabilityMap.py [--n 2 3 4 8] [--nu 0.45 0.499 0.4999]
                       [--cfl 0.3 0.5 0.6 0.7 0.9]
                       [--update compatible constrained plain]
