@@ -19,7 +19,8 @@ On a 4^3 swinging cube, one mistake at a time:
     RK4) in system/fvSolution TOUCH,
   - model vonMisesPlastic with yieldStress 0, and with hardeningModulus -1,
   - a misspelt nodalAveraging (pressur), and nodalAveraging deformation
-    with vonMisesPlastic (a law with state).
+    with vonMisesPlastic (a law with state),
+  - a misspelt jumpShare (quadratc).
 Each run must exit non-zero, its log must contain every expected word, and
 no time folder may be written.  Every mistake is tried; the failure names
 all that were not refused properly.
@@ -99,6 +100,9 @@ MISTAKES = [
       (r"(CFL\s+[0-9.]+;)", r"\1\n    nodalAveraging deformation;")],
      ["'nodalAveraging deformation'", "fvSolution", "vonMisesPlastic",
       "nodalAveraging off"]),
+    ("jumpShare", "system/fvSolution",
+     (r"(CFL\s+[0-9.]+;)", r"\1\n    jumpShare quadratc;"),
+     ["quadratc", "fvSolution", "quadratic", "linear"]),
 ]
 
 

@@ -64,6 +64,18 @@ static inline void spreadToPoints
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
+Foam::scalar Foam::deformationUpdates::compatible::upwindShare
+(
+    const vector& reconstructed,
+    const vector& cell
+) const
+{
+    const scalar phi = jumpShare(reconstructed, cell);
+
+    return quadraticShare_ ? phi*phi : phi;
+}
+
+
 void Foam::deformationUpdates::compatible::addUpwindRate
 (
     vectorField& lmRate
@@ -104,7 +116,7 @@ void Foam::deformationUpdates::compatible::addUpwindRate
                 face.magSf
                *riemann_.upwindTraction
                 (
-                    jumpShare(face.pR() - face.pL(), jump)*jump, face.n()
+                    upwindShare(face.pR() - face.pL(), jump)*jump, face.n()
                 )
             );
 
@@ -166,7 +178,7 @@ void Foam::deformationUpdates::compatible::addBoundaryRate
                 const vector departure((fixed & lm[faceCells[i]]) - pStar);
                 pM[i] =
                     (free[i] & pM[i]) + pStar
-                  + jumpShare((fixed & pM[i]) - pStar, departure)*departure;
+                  + upwindShare((fixed & pM[i]) - pStar, departure)*departure;
             }
 
             // A condition that fixes directions is taken with the normals
@@ -347,6 +359,25 @@ void Foam::deformationUpdates::compatible::addDriftRotation
 }
 
 
+bool Foam::deformationUpdates::compatible::readQuadraticShare
+(
+    const dictionary& controls
+)
+{
+    const word share(controls.getOrDefault<word>("jumpShare", "quadratic"));
+
+    if (share != "quadratic" && share != "linear")
+    {
+        FatalIOErrorInFunction(controls)
+            << "Unknown jumpShare '" << share << "' in " << controls.name()
+            << ": valid choices are quadratic (the default) and linear"
+            << nl << exit(FatalIOError);
+    }
+
+    return share == "quadratic";
+}
+
+
 Foam::scalarField Foam::deformationUpdates::compatible::calcPointMobility
 (
     const fvMesh& mesh,
@@ -421,6 +452,7 @@ Foam::deformationUpdates::compatible::compatible
     faceFree_(faces.mesh().boundary().size()),
     faceVelocity_(faces.mesh().boundary().size()),
     pointForce_(faces.mesh().nPoints(), Zero),
+    quadraticShare_(readQuadraticShare(controls)),
     pointUpwinding_(controls.getOrDefault<scalar>("pointUpwinding", 1)),
     pointMobility_
     (
