@@ -28,7 +28,7 @@ Cases (tutorial settings otherwise):
                     unwrapping of the angles, see its README).
 
 Settings: reconstruction firstOrder | linear | limitedLinear, timeScheme
-RK2 at CFL 0.3 0.5 0.7 and RK3 at CFL 0.5 1.0 (0.7 and 1.0 are the measured
+RK2 at CFL 0.3 0.5 0.6 and RK3 at CFL 0.5 1.0 (0.6 and 1.0 are the measured
 limits of the compatible update, validation/stabilityMap).  Not a full
 factorial; every setting runs on every mesh of its case:
     round 0   one factor at a time around the tutorial's setting (the other

@@ -73,7 +73,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
 
 from touchfoam.provenance import log_steps_and_clock  # noqa: E402
 from touchfoam import run  # noqa: E402
-from touchfoam.foamfile import read_field  # noqa: E402
+from touchfoam.foamfile import read_dict, read_field  # noqa: E402
 from touchfoam.mesh import PolyMesh  # noqa: E402
 from touchfoam.monitor import read_monitor  # noqa: E402
 
@@ -82,6 +82,7 @@ from taylorLiterature import (CHECKER_FIELDS, CHECKER_FREE,  # noqa: E402,F401
 from taylorReport import plot, write_markdown  # noqa: E402
 
 T_END = 8e-5
+V0 = 227.0              # impact speed [m/s] (BENCHMARKS.md 3)
 TUTORIAL = "taylorImpact"
 CCX_DTMAX = "6e-9"      # peer README B: CalculiX's own increment diverges
 CCX_FREQ = "667"        # output every ~4 us, as the peer's baselines
@@ -239,6 +240,26 @@ def at_time(cells, folder):
     }
 
 
+def energy_budget(case, cells, folder):
+    """Where the initial kinetic energy E_0 = rho V v0^2 / 2 went by 80 us:
+    the plastic work sum_e V_e (sigma_y0 epsbar_p + H epsbar_p^2 / 2) (the
+    yield stress is a Kirchhoff one: per reference volume), what is left
+    (kinetic + stored, from the monitor) and the rest, which the scheme's
+    upwinding dissipated (a frictionless wall does no work)."""
+    props = read_dict(os.path.join(case, "constant", "mechanicalProperties"))
+    rho = float(props["rho"])
+    sigma_y0 = float(props["yieldStress"])
+    H = float(props["hardeningModulus"])
+    V = cells.mesh.cell_volumes
+    eps = cells.read(folder, "epsilonP")
+    E0 = 0.5 * rho * V.sum() * V0 ** 2
+    plastic = float((V * (sigma_y0 * eps + 0.5 * H * eps ** 2)).sum())
+    left = float(read_monitor(case)["totalEnergy"][-1])
+    return {"E0_J": E0, "plasticWorkRelative": plastic / E0,
+            "remainingRelative": left / E0,
+            "upwindDissipationRelative": 1 - (plastic + left) / E0}
+
+
 def run_health(case):
     """From the monitor: growth of the total energy (plasticity and a
     frictionless wall only dissipate), max_n (E_n - min_{m<=n} E_m) / E_0,
@@ -279,6 +300,8 @@ def measure(case):
            "AllrunWallTime_s": wall["Allrun_s"], "runError": wall["error"]}
     out.update(final)
     out["energy"] = run_health(case)
+    out["energyBudget"] = energy_budget(case, cells,
+                                        os.path.join(case, times[max(times)]))
     out["history"] = history
     # The reference fields, to judge C
     colour, same = two_colouring(mesh.n_cells, cells.own, cells.nbr)

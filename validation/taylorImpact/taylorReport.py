@@ -94,6 +94,20 @@ def write_markdown(out, path):
             else "%.2f" % (1e6 * e["onsetTime"]), r["minJ"], r["maxJ"],
             e["contactChangesSecondHalf"], e["maxWallForceSecondHalf_N"]))
 
+    lines += ["", "Energy budget at 80 us, in E_0 = rho V v0^2 / 2: the "
+              "plastic work sum V (sigma_y0 epsbar_p + H epsbar_p^2 / 2), "
+              "what is left (kinetic + stored) and the rest, dissipated by "
+              "the scheme's upwinding (energy that a converged solution "
+              "turns into plastic work):", "",
+              "| mesh | plastic work | left | upwind dissipation |",
+              "|---|---|---|---|"]
+    for n, r in meshes.items():
+        b = r.get("energyBudget")
+        if b:
+            lines.append("| -n %s | %.4f | %.4f | %.4f |" % (
+                n, b["plasticWorkRelative"], b["remainingRelative"],
+                b["upwindDissipationRelative"]))
+
     lines += ["", "At the written times: peak epsilonP, C pressure and C "
               "epsilonP over all cells, min J:", "",
               "| t [us] | " + " | ".join("-n %s" % n for n in meshes) + " |",
