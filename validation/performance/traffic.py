@@ -3,8 +3,8 @@
 The estimate of bytes moved between memory and the cores per cell-step of
 the baseline (compatible F update, limitedLinear, RK2, angular momentum
 preservation off, solidMonitor every step) on a hexahedral mesh, read
-from src/TOUCH at main 86b93be (a change of the loops needs a change of
-STAGE or STEP below):
+from src/TOUCH after the compatible update took the stress gradients cell
+by cell (a change of the loops needs a change of STAGE or STEP below):
 
   - every loop ('pass') streams each array it touches once: a face loop
     reaches a cell's values from its six faces, but the column is six
@@ -26,8 +26,8 @@ STAGE or STEP below):
     only (kinematicPointConstraints), so they are boundary loops;
   - sizes: label 4 B, scalar 8, vector 24, tensor 72; a face's point
     list (faceList: 16 B List header, 4 labels in a 32 B heap chunk) 48 B;
-    a point's cell list (pointCells) and a cell's point list (cellPoints),
-    8 labels, 64 B;
+    a cell's face, point and a point's cell list in compactAddressing's
+    flat rows, 6 or 8 labels and an offset: 28 and 36 B;
   - interior faces and points per cell are the mesh's (3 - 13/(6n) and
     (n+1)^2 (6n+1)/(6n^3) for the n x 6n x n column); boundary faces
     (26 n^2 of them, 4.3/n per cell) and their patch loops are left out:
@@ -38,7 +38,7 @@ twice).  Entities: 'cell', 'face' (interior face), 'point'.
 """
 
 SIZES = {"label": 4, "scalar": 8, "vector": 24, "tensor": 72,
-         "face": 48, "list8": 64}
+         "face": 48, "csr6": 28, "csr8": 36}
 
 #: (routine, [(array, entity, type, mode), ...]): one pass each, per stage
 STAGE = [
@@ -47,31 +47,31 @@ STAGE = [
     ("linearReconstruction::update: max |p|, max |P| (tolerances)",
      [("lm", "cell", "vector", "r"), ("P", "cell", "tensor", "r")]),
     ("linearReconstruction::update: cell loop, gathering over its faces "
-     "(gradients, bounds, increments, limiter)",
-     [("cells (face lists)", "cell", "list8", "r"),
+     "(gradients, bounds, increments, limiter), and in it "
+     "compatible::addCellForces: the cell's nodal forces, reconstructed "
+     "traction forces (point upwinding) and boundary tractions at its faces; "
+     "the stress gradients are used there, never stored",
+     [("cellFaces (compactAddressing)", "cell", "csr6", "r"),
       ("owner, neighbour", "face", 8, "r"), ("Cf", "face", "vector", "r"),
       ("Minv", "cell", 48, "r"), ("X", "cell", "vector", "r"),
       ("lm", "cell", "vector", "r"), ("P", "cell", "tensor", "r"),
       ("momentumLimiter", "cell", "vector", "w"),
-      ("gradp, gradPx,y,z", "cell", 4 * 72, "w")]),
+      ("gradp", "cell", "tensor", "w"),
+      ("Sf (the cell forces)", "face", "vector", "r"),
+      ("faces (point lists)", "face", "face", "r"),
+      ("pointForce, reconstructedForce", "point", 48, "rw")]),
     ("touchSolid::computeRates: zero lmRate, FRate",
      [("lmRate", "cell", "vector", "w"), ("FRate", "cell", "tensor", "w")]),
-    ("kinematicPointConstraints::reset, reconstructedForce = 0",
-     [("reconstructedForce", "point", "vector", "w")]),
-    ("compatible::addUpwindRate: forAllCoupled (Riemann flux, face forces)",
+    ("compatible::reconstruct: pointForce = 0, reconstructedForce = 0",
+     [("pointForce, reconstructedForce", "point", 48, "w")]),
+    ("compatible::addFaceRates: forAllCoupled (upwind Riemann flux)",
      [("owner, neighbour", "face", 8, "r"), ("Sf, Cf", "face", 48, "r"),
-      ("faces (point lists)", "face", "face", "r"),
-      ("lm, F, P, X", "cell", 24 + 72 + 72 + 24, "r"),
-      ("gradp, gradPx,y,z", "cell", 4 * 72, "r"),
-      ("lmRate", "cell", "vector", "rw"),
-      ("reconstructedForce", "point", "vector", "rw")]),
-    ("compatible::calcNodalForces",
-     [("pointForce = 0", "point", "vector", "w"),
-      ("owner, neighbour", "face", 8, "r"), ("Sf", "face", "vector", "r"),
-      ("faces (point lists)", "face", "face", "r"),
-      ("P", "cell", "tensor", "r"), ("pointForce", "point", "vector", "rw")]),
+      ("magSf", "face", "scalar", "r"),
+      ("lm, F, X", "cell", 24 + 72 + 24, "r"),
+      ("gradp", "cell", "tensor", "r"),
+      ("lmRate", "cell", "vector", "rw")]),
     ("linearPointInterpolation::interpolate: point loop",
-     [("pointCells", "point", "list8", "r"),
+     [("pointCells (compactAddressing)", "point", "csr8", "r"),
       ("points", "point", "vector", "r"),
       ("lm, X", "cell", 48, "r"),
       ("gradp (the reconstruction's)", "cell", "tensor", "r"),
@@ -98,9 +98,9 @@ STAGE = [
       ("shares", "point", "vector", "w")]),
     ("linearPointInterpolation::addTranspose: cell loop (dual, then "
      "moved to the face neighbours)",
-     [("cellPoints", "cell", "list8", "r"),
+     [("cellPoints (compactAddressing)", "cell", "csr8", "r"),
       ("shares, points", "point", 48, "r"),
-      ("cells (face lists)", "cell", "list8", "r"),
+      ("cellFaces (compactAddressing)", "cell", "csr6", "r"),
       ("owner, neighbour", "face", 8, "r"),
       ("X, momentumLimiter, Minv", "cell", 96, "r"),
       ("lmRate", "cell", "vector", "rw")]),

@@ -7,6 +7,7 @@ License
 
 #include "linearPointInterpolation.H"
 #include "syncTools.H"
+#include "compactAddressing.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -38,11 +39,10 @@ Foam::linearPointInterpolation::linearPointInterpolation
             << exit(FatalError);
     }
 
-    const labelListList& pointCells = mesh_.pointCells();
-
-    forAll(pointCells, pointi)
+    const labelList sizes(compactAddressing::New(mesh_).pointCells().sizes());
+    forAll(sizes, pointi)
     {
-        nPointCells_[pointi] = pointCells[pointi].size();
+        nPointCells_[pointi] = sizes[pointi];
     }
 
     syncTools::syncPointList
@@ -150,10 +150,11 @@ void Foam::linearPointInterpolation::extrapolate
 ) const
 {
     const pointField& points = mesh_.points();
-    const vectorField& X = reconstruction_.X().primitiveField();
-    const labelListList& pointCells = mesh_.pointCells();
+    const vectorField& X = reconstruction_.X();
+    const compactAddressing::rows& pointCells =
+        compactAddressing::New(mesh_).pointCells();
 
-    forAll(pointCells, pointi)
+    for (label pointi = 0; pointi < pointCells.size(); ++pointi)
     {
         vector sum(Zero);
         for (const label celli : pointCells[pointi])
@@ -182,9 +183,10 @@ void Foam::linearPointInterpolation::addTranspose
 ) const
 {
     const pointField& points = mesh_.points();
-    const vectorField& X = reconstruction_.X().primitiveField();
-    const labelListList& cellPoints = mesh_.cellPoints();
-    const cellList& cells = mesh_.cells();
+    const vectorField& X = reconstruction_.X();
+    const compactAddressing& addressing = compactAddressing::New(mesh_);
+    const compactAddressing::rows& cellPoints = addressing.cellPoints();
+    const compactAddressing::rows& cells = addressing.cellFaces();
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const label nInternal = mesh_.nInternalFaces();
@@ -200,7 +202,7 @@ void Foam::linearPointInterpolation::addTranspose
     // neighbour's share arrives from the other rank
     boundaryFaceWork_ = Zero;
 
-    forAll(cellPoints, celli)
+    for (label celli = 0; celli < cellPoints.size(); ++celli)
     {
         // The mean and the extrapolation: the cell collects its points'
         // shares f_a/n_a, and the dual H_e = sum_a f_a/n_a (x) (X_a - X_e)

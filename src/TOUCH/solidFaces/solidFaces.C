@@ -50,6 +50,7 @@ void Foam::solidFaces::fillInteriorState(const label patchi)
     vectorField& tM = tM_[patchi];
     vectorField& nM = nM_[patchi];
     vectorField& xM = xM_[patchi];
+    const bool stored = reconstruction_.storesStressGradients();
 
     forAll(faceCells, i)
     {
@@ -58,7 +59,10 @@ void Foam::solidFaces::fillInteriorState(const label patchi)
         const vector r(Cf[patch.start() + i] - owner.X);
 
         pM[i] = owner.p(r);
-        tM[i] = owner.t(r, N[i]);
+        if (stored)
+        {
+            tM[i] = owner.t(r, N[i]);
+        }
         nM[i] = spatialNormal(owner.F, N[i]);
         xM[i] = owner.X + u_[o] + (owner.F & r);
     }
@@ -91,9 +95,6 @@ Foam::solidFaces::solidFaces
     sizeBuffers(mesh, FN_, coupled);
     sizeBuffers(mesh, PN_, coupled);
     sizeBuffers(mesh, gradLmN_, coupled);
-    sizeBuffers(mesh, gradPxN_, coupled);
-    sizeBuffers(mesh, gradPyN_, coupled);
-    sizeBuffers(mesh, gradPzN_, coupled);
     sizeBuffers(mesh, XN_, coupled);
     sizeBuffers(mesh, uN_, coupled);
 
@@ -109,9 +110,7 @@ Foam::solidFaces::solidFaces
 
         if (patch.coupled())
         {
-            XN_[patchi] =
-                reconstruction_.X().boundaryField()[patchi]
-               .patchNeighbourField();
+            XN_[patchi] = reconstruction_.neighbourCentres(patchi);
         }
         else if (patch.size())
         {
@@ -139,15 +138,28 @@ void Foam::solidFaces::update()
         gradLmN_[patchi] =
             reconstruction_.gradp().boundaryField()[patchi]
            .patchNeighbourField();
-        gradPxN_[patchi] =
-            reconstruction_.gradP(0).boundaryField()[patchi]
-           .patchNeighbourField();
-        gradPyN_[patchi] =
-            reconstruction_.gradP(1).boundaryField()[patchi]
-           .patchNeighbourField();
-        gradPzN_[patchi] =
-            reconstruction_.gradP(2).boundaryField()[patchi]
-           .patchNeighbourField();
+
+        if (reconstruction_.storesStressGradients())
+        {
+            if (gradPxN_.empty())
+            {
+                // Sized on first use, as the stored gradients are
+                auto coupled = [](const fvPatch& p) { return p.coupled(); };
+                sizeBuffers(mesh_, gradPxN_, coupled);
+                sizeBuffers(mesh_, gradPyN_, coupled);
+                sizeBuffers(mesh_, gradPzN_, coupled);
+            }
+
+            gradPxN_[patchi] =
+                reconstruction_.gradP(0).boundaryField()[patchi]
+               .patchNeighbourField();
+            gradPyN_[patchi] =
+                reconstruction_.gradP(1).boundaryField()[patchi]
+               .patchNeighbourField();
+            gradPzN_[patchi] =
+                reconstruction_.gradP(2).boundaryField()[patchi]
+               .patchNeighbourField();
+        }
     }
 }
 

@@ -34,7 +34,7 @@ void Foam::solidFaces::forAllCoupled(Op op) const
             coupledFace
             {
                 facei, o, n, left, right,
-                magSf, Sf[facei]/magSf, Cf[facei] - left.X, Cf[facei] - right.X
+                Sf[facei], magSf, Cf[facei] - left.X, Cf[facei] - right.X
             }
         );
     };

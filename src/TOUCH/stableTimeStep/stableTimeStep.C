@@ -76,7 +76,7 @@ Foam::scalarField Foam::stableTimeStep::calcCellLengths
     (
         [&](const solidFaces::coupledFace& face)
         {
-            const scalar hf = mag((face.right.X - face.left.X) & face.N);
+            const scalar hf = mag((face.right.X - face.left.X) & face.N());
             h[face.owner] = min(h[face.owner], hf);
             if (face.neighbour >= 0)
             {

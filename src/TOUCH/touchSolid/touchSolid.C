@@ -101,7 +101,7 @@ void Foam::touchSolid::computeRates(const label stage)
         );
         P_.correctBoundaryConditions();
     }
-    reconstruction_.update(lm_, P_);
+    update_->reconstruct(reconstruction_, lm_, P_);
     faces_.update();
 
     lmRate_ = Zero;

@@ -64,7 +64,7 @@ static inline void spreadToPoints
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
-Foam::scalar Foam::deformationUpdates::compatible::upwindShare
+inline Foam::scalar Foam::deformationUpdates::compatible::upwindShare
 (
     const vector& reconstructed,
     const vector& cell
@@ -76,47 +76,42 @@ Foam::scalar Foam::deformationUpdates::compatible::upwindShare
 }
 
 
-void Foam::deformationUpdates::compatible::addUpwindRate
+void Foam::deformationUpdates::compatible::addFaceRates
 (
     vectorField& lmRate
 )
 {
-    const faceList& faces = faces_.mesh().faces();
-    const bool upwindPoints = pointUpwinding_ > 0;
+    const bool spinning = magSqr(rigidSpin_) > 0;
+    const scalar cN = upwindNormal_;
+    const scalar cT = upwindTangential_;
 
     faces_.forAllCoupled
     (
         [&](const solidFaces::coupledFace& face)
         {
-            if (upwindPoints)
-            {
-                // The face force of the reconstructed traction jump; a
-                // processor face is visited on both sides, each adds half
-                const scalar share = face.neighbour >= 0 ? 1 : 0.5;
-                spreadToPoints
-                (
-                    faces[face.facei],
-                    (share*face.magSf)*(face.tL() - face.tR()),
-                    reconstructedForce_
-                );
-            }
-
             // The central traction is the point coupling's; the upwind
             // part damps the share of the cell jump the reconstruction
             // keeps: the flux of the jump alone. With preservation, less
             // the jump of the body's rigid spin (zero otherwise), which no
             // reconstruction keeps and which the upwinding must not damp
-            const vector jump
+            vector jump(face.right.lm - face.left.lm);
+            if (spinning)
+            {
+                jump -= rigidSpin_ ^ (face.right.x() - face.left.x());
+            }
+            const vector dp
             (
-                face.right.lm - face.left.lm
-              - (rigidSpin_ ^ (face.right.x() - face.left.x()))
+                upwindShare(face.pR() - face.pL(), jump)*jump
             );
+            const vector n(face.n());
+
             const vector tC
             (
                 face.magSf
-               *riemann_.upwindTraction
-                (
-                    upwindShare(face.pR() - face.pL(), jump)*jump, face.n()
+               *(
+                    upwindInline_
+                  ? vector(cT*dp + ((cN - cT)*(n & dp))*n)
+                  : riemann_.upwindTraction(dp, n)
                 )
             );
 
@@ -230,54 +225,6 @@ void Foam::deformationUpdates::compatible::addBoundaryRate
                 }
             }
         }
-    );
-}
-
-
-void Foam::deformationUpdates::compatible::calcNodalForces()
-{
-    const faceList& faces = faces_.mesh().faces();
-    const vectorField& Sf = faces_.mesh().faceAreas();
-    const tensorField& P = faces_.P().primitiveField();
-
-    // Nodal forces f_a = sum over the faces at a of P C/n_f, for which the
-    // stress power sum_e P_e : V_e dF_e/dt of the point motion is
-    // sum_a f_a . v_a
-    pointForce_ = Zero;
-    const bool uniform = shares_.uniform();
-
-    faces_.forAllFaces
-    (
-        [&](const label facei, const label own, const label nei)
-        {
-            const face& f = faces[facei];
-            const tensor jump(nei >= 0 ? P[own] - P[nei] : P[own]);
-
-            if (uniform)
-            {
-                // Equal shares S_f/n_f: one force for all the face's points
-                const vector force(jump & (Sf[facei]/f.size()));
-                for (const label pointi : f)
-                {
-                    pointForce_[pointi] += force;
-                }
-                return;
-            }
-
-            shares_.forAllPoints
-            (
-                f, facei, Sf[facei],
-                [&](const label pointi, const vector& s)
-                {
-                    pointForce_[pointi] += jump & s;
-                }
-            );
-        }
-    );
-
-    syncTools::syncPointList
-    (
-        faces_.mesh(), pointForce_, plusEqOp<vector>(), vector::zero
     );
 }
 
@@ -437,6 +384,7 @@ Foam::deformationUpdates::compatible::compatible
 )
 :
     deformationUpdate(controls, faces, law, riemann, reconstruction),
+    cellFaces_(compactAddressing::New(faces.mesh()).cellFaces()),
     pointInterpolation_
     (
         faces.mesh(),
@@ -458,7 +406,10 @@ Foam::deformationUpdates::compatible::compatible
     (
         calcPointMobility(faces.mesh(), pointUpwinding_, law.rho()*law.Up())
     ),
-    reconstructedForce_(pointUpwinding_ > 0 ? faces.mesh().nPoints() : 0)
+    reconstructedForce_(pointUpwinding_ > 0 ? faces.mesh().nPoints() : 0),
+    upwindNormal_(0),
+    upwindTangential_(0),
+    upwindInline_(riemann.upwindCoefficients(upwindNormal_, upwindTangential_))
 {
     if (pointUpwinding_ < 0)
     {
@@ -489,14 +440,15 @@ void Foam::deformationUpdates::compatible::rates
     vector& torque
 )
 {
+    // The nodal forces and the reconstructed ones are in from
+    // reconstruct()
     constraints_.reset();
-    reconstructedForce_ = Zero;
 
-    addUpwindRate(lmRate);
+    addFaceRates(lmRate);
     addBoundaryRate(stage, lmRate, torque);
 
     constraints_.finalise();
-    calcNodalForces();
+    completeNodalForces();
 
     // Point velocities v_a = Pi_a (A v)_a + b_a, and the upwinding of the
     // nodal forces

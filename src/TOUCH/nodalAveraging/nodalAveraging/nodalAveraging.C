@@ -7,6 +7,7 @@ License
 
 #include "nodalAveraging.H"
 #include "syncTools.H"
+#include "compactAddressing.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -56,9 +57,9 @@ Foam::label Foam::nodalAveraging::nTetrahedra(const fvMesh& mesh)
 {
     // A closed cell of four faces is a tetrahedron
     label n = 0;
-    for (const cell& c : mesh.cells())
+    for (const label nFaces : compactAddressing::New(mesh).cellFaces().sizes())
     {
-        if (c.size() == 4)
+        if (nFaces == 4)
         {
             ++n;
         }
