@@ -210,34 +210,31 @@ Foam::linearReconstruction::linearReconstruction
         }
         X.correctBoundaryConditions();
 
+        // Both empty but on the coupled patches
         forAll(mesh.boundary(), patchi)
         {
+            const bool coupled = mesh.boundary()[patchi].coupled();
+
             neighbourCentres_.set
             (
                 patchi,
                 new vectorField
                 (
-                    mesh.boundary()[patchi].coupled()
+                    coupled
                   ? X.boundaryField()[patchi].patchNeighbourField()
                   : tmp<vectorField>(new vectorField())
                 )
             );
-        }
-    }
-
-    forAll(mesh.boundary(), patchi)
-    {
-        coupledWeights_.set
-        (
-            patchi,
-            new vectorField
+            coupledWeights_.set
             (
-                mesh.boundary()[patchi].coupled()
-              ? mesh.boundary()[patchi].size()
-              : 0,
-                Zero
-            )
-        );
+                patchi,
+                new vectorField
+                (
+                    coupled ? mesh.boundary()[patchi].size() : 0,
+                    Zero
+                )
+            );
+        }
     }
 
     calcWeights();
