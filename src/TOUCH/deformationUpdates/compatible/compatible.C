@@ -103,17 +103,20 @@ void Foam::deformationUpdates::compatible::addFaceRates
             (
                 upwindShare(face.pR() - face.pL(), jump)*jump
             );
-            const vector n(face.n());
-
-            const vector tC
-            (
-                face.magSf
-               *(
-                    upwindInline_
-                  ? vector(cT*dp + ((cN - cT)*(n & dp))*n)
-                  : riemann_.upwindTraction(dp, n)
-                )
-            );
+            vector tC;
+            if (upwindInline_)
+            {
+                // With m = cof(F_L + F_R) S_f, the spatial normal's
+                // projector n n = m m/|m|^2: no square root
+                const vector m(cof(face.left.F + face.right.F) & face.Sf);
+                tC =
+                    face.magSf
+                   *(cT*dp + ((cN - cT)*(m & dp)/magSqr(m))*m);
+            }
+            else
+            {
+                tC = face.magSf*riemann_.upwindTraction(dp, face.n());
+            }
 
             lmRate[face.owner] += tC;
             if (face.neighbour >= 0)

@@ -36,9 +36,7 @@ static inline scalar inverseSize(const label n)
 void Foam::deformationUpdates::compatible::addCellForces
 (
     const label celli,
-    const tensor& gradPx,
-    const tensor& gradPy,
-    const tensor& gradPz
+    const tensor* dPf
 )
 {
     const fvMesh& mesh = faces_.mesh();
@@ -46,14 +44,18 @@ void Foam::deformationUpdates::compatible::addCellForces
     const labelUList& own = mesh.owner();
     const faceList& faces = mesh.faces();
     const vectorField& Sf = mesh.faceAreas();
-    const vectorField& Cf = mesh.faceCentres();
-    const vector& X = faces_.reconstructionCentres()[celli];
     const tensor& Pc = faces_.P()[celli];
     const bool upwindPoints = pointUpwinding_ > 0;
     const bool uniform = shares_.uniform();
+    auto patchSolid = [&](const label patchi)
+    {
+        return !mesh.boundary()[patchi].coupled();
+    };
 
+    label k = -1;
     for (const label facei : cellFaces_[celli])
     {
+        ++k;
         const bool interior = facei < nInternal;
         label patchi = -1;
         if (!interior)
@@ -75,6 +77,23 @@ void Foam::deformationUpdates::compatible::addCellForces
         // The central nodal forces: this cell's stress on its side of the
         // face (the neighbour adds its own, on this rank or another)
         const vector central(Pc & S);
+
+        // This cell's reconstructed traction force at the face
+        const vector reconstructed(central + (dPf[k] & S));
+
+        if (uniform && upwindPoints && (interior || !patchSolid(patchi)))
+        {
+            // Both forces in one pass over the face's points
+            const vector force(central*invSize);
+            const vector share(reconstructed*invSize);
+            for (const label pointi : f)
+            {
+                pointForce_[pointi] += force;
+                reconstructedForce_[pointi] += share;
+            }
+            continue;
+        }
+
         if (uniform)
         {
             const vector force(central*invSize);
@@ -95,15 +114,7 @@ void Foam::deformationUpdates::compatible::addCellForces
             );
         }
 
-        // This cell's reconstructed traction force at the face
-        const vector r(Cf[facei] - X);
-        const vector reconstructed
-        (
-            central + r.x()*(gradPx & S) + r.y()*(gradPy & S)
-          + r.z()*(gradPz & S)
-        );
-
-        if (!interior && !mesh.boundary()[patchi].coupled())
+        if (!interior && patchSolid(patchi))
         {
             // The interior traction a boundary condition answers
             const label i = facei - mesh.boundary()[patchi].start();
@@ -152,15 +163,9 @@ void Foam::deformationUpdates::compatible::reconstruct
     (
         lm,
         P,
-        [&]
-        (
-            const label celli,
-            const tensor& gradPx,
-            const tensor& gradPy,
-            const tensor& gradPz
-        )
+        [&](const label celli, const tensor* dPf)
         {
-            addCellForces(celli, gradPx, gradPy, gradPz);
+            addCellForces(celli, dPf);
         }
     );
 }

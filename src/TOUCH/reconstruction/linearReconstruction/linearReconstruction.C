@@ -288,7 +288,7 @@ void Foam::linearReconstruction::update
     tensorField& gy = gradP_[1].primitiveFieldRef();
     tensorField& gz = gradP_[2].primitiveFieldRef();
 
-    update
+    updateCells<false>
     (
         p,
         P,
@@ -297,12 +297,14 @@ void Foam::linearReconstruction::update
             const label celli,
             const tensor& gxc,
             const tensor& gyc,
-            const tensor& gzc
+            const tensor& gzc,
+            const tensor& phiP,
+            const tensor*
         )
         {
-            gx[celli] = gxc;
-            gy[celli] = gyc;
-            gz[celli] = gzc;
+            gx[celli] = cmptMultiply(gxc, phiP);
+            gy[celli] = cmptMultiply(gyc, phiP);
+            gz[celli] = cmptMultiply(gzc, phiP);
         }
     );
 

@@ -73,20 +73,39 @@ inline Type Foam::linearReconstruction::factors
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-template<class StressOp>
-void Foam::linearReconstruction::update
+template<bool FaceIncrements, class CellOp>
+void Foam::linearReconstruction::updateCells
 (
     const volVectorField& p,
     const volTensorField& P,
-    StressOp stressOp
+    CellOp cellOp
 )
 {
+    const compactAddressing::rows& cells =
+        compactAddressing::New(mesh_).cellFaces();
+
+    // The increments of P from each cell's centre to its face centres, in
+    // the order of its faces: the limiter's second pass computes them
+    // anyway, and the caller needs nothing else of the stress gradients
+    if (faceIncrements_.empty())
+    {
+        label largest = 0;
+        for (label c = 0; c < cells.size(); ++c)
+        {
+            largest = max(largest, cells[c].size());
+        }
+        faceIncrements_.setSize(largest, Zero);
+    }
+    tensor* dPf = faceIncrements_.data();
+
+    const tensor zero(Zero);
+    const tensor unlimited(tensor::one);
+
     if (scheme_ == scheme::firstOrder)
     {
-        const tensor zero(Zero);
         forAll(P, celli)
         {
-            stressOp(celli, zero, zero, zero);
+            cellOp(celli, zero, zero, zero, zero, dPf);
         }
         return;
     }
@@ -95,8 +114,6 @@ void Foam::linearReconstruction::update
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const label nInternal = mesh_.nInternalFaces();
-    const compactAddressing::rows& cells =
-        compactAddressing::New(mesh_).cellFaces();
     const vectorField& C = X();
     const vectorField& Cf = mesh_.faceCentres();
     const vectorField& pi = p.primitiveField();
@@ -203,7 +220,16 @@ void Foam::linearReconstruction::update
         if (!limited)
         {
             gp[c] = gpc;
-            stressOp(c, gxc, gyc, gzc);
+            if (FaceIncrements)
+            {
+                label k = 0;
+                for (const label facei : cellFaces)
+                {
+                    const vector r(Cf[facei] - C[c]);
+                    dPf[k++] = r.x()*gxc + r.y()*gyc + r.z()*gzc;
+                }
+            }
+            cellOp(c, gxc, gyc, gzc, unlimited, dPf);
             continue;
         }
 
@@ -223,11 +249,13 @@ void Foam::linearReconstruction::update
         tensor PUp(Zero);
         tensor PDown(Zero);
 
+        label k = 0;
         for (const label facei : cellFaces)
         {
             const vector r(Cf[facei] - C[c]);
             const vector dp(r & gpc);
-            const tensor dP(r.x()*gxc + r.y()*gyc + r.z()*gzc);
+            const tensor& dP =
+                (dPf[k++] = r.x()*gxc + r.y()*gyc + r.z()*gzc);
 
             if
             (
@@ -272,16 +300,47 @@ void Foam::linearReconstruction::update
                     phip.x(), phip.y(), phip.z()
                 )
             );
-        stressOp
-        (
-            c,
-            cmptMultiply(gxc, phiP),
-            cmptMultiply(gyc, phiP),
-            cmptMultiply(gzc, phiP)
-        );
+        // The limited gradient's increments: the factor of a component
+        // scales its derivatives along X, Y and Z alike
+        if (FaceIncrements)
+        {
+            for (label f = 0; f < k; ++f)
+            {
+                dPf[f] = cmptMultiply(dPf[f], phiP);
+            }
+        }
+        cellOp(c, gxc, gyc, gzc, phiP, dPf);
     }
 
     gradp_.correctBoundaryConditions();
+}
+
+
+template<class StressOp>
+void Foam::linearReconstruction::update
+(
+    const volVectorField& p,
+    const volTensorField& P,
+    StressOp stressOp
+)
+{
+    updateCells<true>
+    (
+        p,
+        P,
+        [&]
+        (
+            const label celli,
+            const tensor&,
+            const tensor&,
+            const tensor&,
+            const tensor&,
+            const tensor* dPf
+        )
+        {
+            stressOp(celli, dPf);
+        }
+    );
 }
 
 
