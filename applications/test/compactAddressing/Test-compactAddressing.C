@@ -11,9 +11,8 @@ Description
     Checks compactAddressing on the case's mesh (any cell shape): its cell
     faces, cell points and point cells hold the entries of the mesh's own
     cells(), cellPoints() and pointCells(), in ascending order, so that the
-    sums of the classes that moved to it round as before, and the slots
-    of the faces' points in their cells' point rows name those points.
-    It is built before the mesh's lists, which must not be needed for it.
+    sums of the classes that moved to it round as before.  It is built
+    before the mesh's lists, which must not be needed for it.
     Exits non-zero on any wrong answer.
 
 Usage
@@ -61,45 +60,6 @@ static bool sameRows(const compactAddressing::rows& rows, const Lists& lists)
 }
 
 
-//- Whether the slot of every face point in its cell's point row names
-//  that point, face by face in the order of the cell's faces
-static bool slotsNamePoints
-(
-    const compactAddressing& addressing,
-    const faceList& faces
-)
-{
-    const compactAddressing::slotRows& slots =
-        addressing.cellFacePointSlots();
-    if (slots.empty())
-    {
-        return false;
-    }
-
-    const compactAddressing::rows& cellFaces = addressing.cellFaces();
-    const compactAddressing::rows& cellPoints = addressing.cellPoints();
-
-    for (label c = 0; c < cellFaces.size(); ++c)
-    {
-        const uint8_t* slot = slots.row(c);
-        const UList<label> points(cellPoints[c]);
-        for (const label facei : cellFaces[c])
-        {
-            for (const label pointi : faces[facei])
-            {
-                const label s = *slot++;
-                if (s >= points.size() || points[s] != pointi)
-                {
-                    return false;
-                }
-            }
-        }
-    }
-
-    return true;
-}
-
-
 int main(int argc, char *argv[])
 {
     #include "setRootCase.H"
@@ -129,11 +89,6 @@ int main(int argc, char *argv[])
     (
         "point cells = mesh.pointCells()",
         sameRows(addressing.pointCells(), mesh.pointCells())
-    );
-    report.check
-    (
-        "face point slots name the cell points",
-        slotsNamePoints(addressing, mesh.faces())
     );
     report.check
     (

@@ -6,7 +6,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "compactAddressing.H"
-#include <algorithm>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -40,56 +39,6 @@ Foam::labelList Foam::compactAddressing::rows::sizes() const
         n[i] = offsets_[i + 1] - offsets_[i];
     }
     return n;
-}
-
-
-Foam::compactAddressing::slotRows::slotRows
-(
-    const polyMesh& mesh,
-    const rows& cf,
-    const rows& cp
-)
-:
-    offsets_(),
-    slots_()
-{
-    const faceList& faces = mesh.faces();
-
-    labelList offsets(cf.size() + 1);
-    offsets[0] = 0;
-    for (label c = 0; c < cf.size(); ++c)
-    {
-        if (cp[c].size() > 256)
-        {
-            return;
-        }
-        label n = 0;
-        for (const label facei : cf[c])
-        {
-            n += faces[facei].size();
-        }
-        offsets[c + 1] = offsets[c] + n;
-    }
-
-    slots_.setSize(offsets.last());
-    for (label c = 0; c < cf.size(); ++c)
-    {
-        // The cell's points are ascending: a binary search finds each
-        const UList<label> points(cp[c]);
-        uint8_t* slot = slots_.data() + offsets[c];
-        for (const label facei : cf[c])
-        {
-            for (const label pointi : faces[facei])
-            {
-                *slot++ = uint8_t
-                (
-                    std::lower_bound(points.begin(), points.end(), pointi)
-                  - points.begin()
-                );
-            }
-        }
-    }
-    offsets_.transfer(offsets);
 }
 
 
@@ -220,25 +169,8 @@ Foam::compactAddressing::compactAddressing(const fvMesh& mesh)
     MeshObject<fvMesh, TopologicalMeshObject, compactAddressing>(mesh),
     cellFaces_(calcCellFaces(mesh)),
     cellPoints_(calcCellPoints(mesh, cellFaces_)),
-    pointCells_(calcPointCells(mesh.nPoints(), cellPoints_)),
-    cellFacePointSlots_()
+    pointCells_(calcPointCells(mesh.nPoints(), cellPoints_))
 {}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-const Foam::compactAddressing::slotRows&
-Foam::compactAddressing::cellFacePointSlots() const
-{
-    if (!cellFacePointSlots_.valid())
-    {
-        cellFacePointSlots_.reset
-        (
-            new slotRows(mesh(), cellFaces_, cellPoints_)
-        );
-    }
-    return *cellFacePointSlots_;
-}
 
 
 // ************************************************************************* //

@@ -388,13 +388,6 @@ Foam::deformationUpdates::compatible::compatible
 :
     deformationUpdate(controls, faces, law, riemann, reconstruction),
     cellFaces_(compactAddressing::New(faces.mesh()).cellFaces()),
-    cellPoints_(compactAddressing::New(faces.mesh()).cellPoints()),
-    cellFacePointSlots_
-    (
-        compactAddressing::New(faces.mesh()).cellFacePointSlots()
-    ),
-    cellPointForce_(cellPoints_.size() ? max(cellPoints_.sizes()) : 0, Zero),
-    cellPointReconstructedForce_(cellPointForce_.size(), Zero),
     pointInterpolation_
     (
         faces.mesh(),

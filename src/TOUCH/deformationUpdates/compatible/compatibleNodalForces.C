@@ -47,23 +47,15 @@ void Foam::deformationUpdates::compatible::addCellForces
     const tensor& Pc = faces_.P()[celli];
     const bool upwindPoints = pointUpwinding_ > 0;
     const bool uniform = shares_.uniform();
-
-    // With equal shares the faces' point forces are summed per cell point
-    // first, and each cell point's sums are added to the point once
-    const bool bySlots = uniform && !cellFacePointSlots_.empty();
-    const uint8_t* slot = bySlots ? cellFacePointSlots_.row(celli) : nullptr;
-    const UList<label> points(bySlots ? cellPoints_[celli] : UList<label>());
-    forAll(points, s)
+    auto patchSolid = [&](const label patchi)
     {
-        cellPointForce_[s] = Zero;
-        cellPointReconstructedForce_[s] = Zero;
-    }
+        return !mesh.boundary()[patchi].coupled();
+    };
 
     label k = -1;
     for (const label facei : cellFaces_[celli])
     {
         ++k;
-        const Foam::face& f = faces[facei];
         const bool interior = facei < nInternal;
         label patchi = -1;
         if (!interior)
@@ -72,10 +64,6 @@ void Foam::deformationUpdates::compatible::addCellForces
             if (mesh.boundary()[patchi].size() == 0)
             {
                 // empty: no flux, no force
-                if (bySlots)
-                {
-                    slot += f.size();
-                }
                 continue;
             }
         }
@@ -83,37 +71,25 @@ void Foam::deformationUpdates::compatible::addCellForces
         // The area vector out of this cell
         const bool owner = !interior || own[facei] == celli;
         const vector S(owner ? Sf[facei] : -Sf[facei]);
+        const Foam::face& f = faces[facei];
         const scalar invSize = inverseSize(f.size());
 
         // The central nodal forces: this cell's stress on its side of the
-        // face (the neighbour adds its own, on this rank or another), and
-        // this cell's reconstructed traction force at the face
+        // face (the neighbour adds its own, on this rank or another)
         const vector central(Pc & S);
+
+        // This cell's reconstructed traction force at the face
         const vector reconstructed(central + (dPf[k] & S));
 
-        const bool solid =
-            !interior && !mesh.boundary()[patchi].coupled();
-        if (solid)
+        if (uniform && upwindPoints && (interior || !patchSolid(patchi)))
         {
-            // The interior traction a boundary condition answers
-            const label i = facei - mesh.boundary()[patchi].start();
-            faces_.interiorTraction(patchi)[i] =
-                reconstructed/mesh.boundary()[patchi].magSf()[i];
-        }
-        const bool addReconstructed = upwindPoints && !solid;
-
-        if (bySlots)
-        {
+            // Both forces in one pass over the face's points
             const vector force(central*invSize);
             const vector share(reconstructed*invSize);
-            forAll(f, j)
+            for (const label pointi : f)
             {
-                const uint8_t s = *slot++;
-                cellPointForce_[s] += force;
-                if (addReconstructed)
-                {
-                    cellPointReconstructedForce_[s] += share;
-                }
+                pointForce_[pointi] += force;
+                reconstructedForce_[pointi] += share;
             }
             continue;
         }
@@ -138,25 +114,20 @@ void Foam::deformationUpdates::compatible::addCellForces
             );
         }
 
-        if (addReconstructed)
+        if (!interior && patchSolid(patchi))
+        {
+            // The interior traction a boundary condition answers
+            const label i = facei - mesh.boundary()[patchi].start();
+            faces_.interiorTraction(patchi)[i] =
+                reconstructed/mesh.boundary()[patchi].magSf()[i];
+        }
+        else if (upwindPoints)
         {
             const vector share(reconstructed*invSize);
             for (const label pointi : f)
             {
                 reconstructedForce_[pointi] += share;
             }
-        }
-    }
-
-    forAll(points, s)
-    {
-        pointForce_[points[s]] += cellPointForce_[s];
-    }
-    if (upwindPoints)
-    {
-        forAll(points, s)
-        {
-            reconstructedForce_[points[s]] += cellPointReconstructedForce_[s];
         }
     }
 }
