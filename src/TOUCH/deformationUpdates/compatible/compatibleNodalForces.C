@@ -47,10 +47,6 @@ void Foam::deformationUpdates::compatible::addCellForces
     const tensor& Pc = faces_.P()[celli];
     const bool upwindPoints = pointUpwinding_ > 0;
     const bool uniform = shares_.uniform();
-    auto patchSolid = [&](const label patchi)
-    {
-        return !mesh.boundary()[patchi].coupled();
-    };
 
     label k = -1;
     for (const label facei : cellFaces_[celli])
@@ -81,19 +77,6 @@ void Foam::deformationUpdates::compatible::addCellForces
         // This cell's reconstructed traction force at the face
         const vector reconstructed(central + (dPf[k] & S));
 
-        if (uniform && upwindPoints && (interior || !patchSolid(patchi)))
-        {
-            // Both forces in one pass over the face's points
-            const vector force(central*invSize);
-            const vector share(reconstructed*invSize);
-            for (const label pointi : f)
-            {
-                pointForce_[pointi] += force;
-                reconstructedForce_[pointi] += share;
-            }
-            continue;
-        }
-
         if (uniform)
         {
             const vector force(central*invSize);
@@ -114,7 +97,7 @@ void Foam::deformationUpdates::compatible::addCellForces
             );
         }
 
-        if (!interior && patchSolid(patchi))
+        if (!interior && !mesh.boundary()[patchi].coupled())
         {
             // The interior traction a boundary condition answers
             const label i = facei - mesh.boundary()[patchi].start();
