@@ -7,6 +7,7 @@
                  [--cube-settings default linear-RK2-CFL0.6 ...]
                  [--reference 330.7] [--band 328.9 332.6]
                  [--reference-size 24] [--build-label LABEL] [--no-run]
+                 [--repeat R]
 
 Runs, one at a time and on one thread each (OMP_NUM_THREADS=1 for ccx),
 CalculiX (decks from the peer's generators in ../shared/peers/calculix,
@@ -49,6 +50,12 @@ cube    tutorials/swingingCube on N^3 cells or C3D8/C3D8R elements, to
         Errors at equal wall time: each code's log e - log wall line
         between successive meshes, evaluated at every run's wall time
         (outside a code's range: extrapolated, marked).
+
+--repeat R runs every CalculiX and touchFoam job R times, round robin over
+all of them (the first repeat of every job, then the second, ...), so that
+a change of the machine's speed within the run falls on both codes alike;
+the wall and CPU times reported are the medians of the R runs (as the
+issue's own side-by-side table), each run's are kept in run.json.
 
 Writes results.json, results.md, column.png, cube.png, and the tables into
 README.md between '<!-- results -->' and '<!-- /results -->'.  --no-run
@@ -153,6 +160,26 @@ def _stamp():
             "loadBefore": list(os.getloadavg())}
 
 
+def _repeated(folder, repeat):
+    """The wall and CPU times of the earlier repeats of a job (empty for
+    the first), read before its folder is remade."""
+    if repeat == 0 or not os.path.exists(os.path.join(folder, RUN_INFO)):
+        return {"walls": [], "cpus": []}
+    old = _load(folder)
+    return {"walls": old.get("walls", [old["wall"]]),
+            "cpus": old.get("cpus", [old["cpu"]])}
+
+
+def _with_repeats(info, earlier):
+    """info's wall and cpu become the medians over this and the earlier
+    repeats; the single runs are kept."""
+    info["walls"] = earlier["walls"] + [info["wall"]]
+    info["cpus"] = earlier["cpus"] + [info["cpu"]]
+    info["wall"] = float(np.median(info["walls"]))
+    info["cpu"] = float(np.median(info["cpus"]))
+    return info
+
+
 # -- touchFoam ----------------------------------------------------------------
 
 def touch_control(setting, end, extra=None):
@@ -166,11 +193,12 @@ def touch_control(setting, end, extra=None):
 
 
 def run_touchfoam(case, tutorial, n, setting, control, folder=None,
-                  prefix=()):
+                  prefix=(), repeat=0):
     folder = folder or run_dir(case, n, "touchFoam-" + setting)
     print("touchFoam %s n=%d %s%s" % (case, n, setting,
                                       " (%s)" % " ".join(prefix) if prefix
                                       else ""), flush=True)
+    earlier = _repeated(folder, repeat)
     info = _stamp()
     start = time.perf_counter()
     cases.prepare(tutorial, folder, n=n, touch=SETTINGS[setting]["touch"],
@@ -184,7 +212,7 @@ def run_touchfoam(case, tutorial, n, setting, control, folder=None,
     info["steps"], info["clockTime"] = provenance.log_steps_and_clock(folder)
     info["dt0"] = _first_dt(folder)
     info["setting"] = setting
-    _save(folder, info)
+    _save(folder, _with_repeats(info, earlier))
     print("    wall %.2f s, cpu %.2f s, %d steps" % (
         info["wall"], info["cpu"], info["steps"]), flush=True)
 
@@ -199,12 +227,13 @@ def _first_dt(folder):
 
 # -- CalculiX -----------------------------------------------------------------
 
-def run_calculix(case, n, element, folder=None, prefix=()):
+def run_calculix(case, n, element, folder=None, prefix=(), repeat=0):
     folder = folder or run_dir(case, n, "ccx-" + element)
     job = "%s%d_%s" % (case, n, element)
     print("ccx %s n=%d %s%s" % (case, n, element,
                                 " (%s)" % " ".join(prefix) if prefix
                                 else ""), flush=True)
+    earlier = _repeated(folder, repeat)
     if os.path.exists(folder):
         shutil.rmtree(folder)
     info = _stamp()
@@ -227,7 +256,7 @@ def run_calculix(case, n, element, folder=None, prefix=()):
         # end at t_end (log: 'the increment size exceeds the remainder')
         end = COLUMN_END if case == "column" else CUBE_END
         info["steps"] = int(math.ceil(end / info["dt0"] - 1e-9))
-    _save(folder, info)
+    _save(folder, _with_repeats(info, earlier))
     print("    wall %.2f s, cpu %.2f s, %s increments" % (
         info["wall"], info["cpu"], info["steps"]), flush=True)
 
@@ -494,21 +523,26 @@ def run_all(args):
             run_touchfoam("column", "twistingColumn", n, REFERENCE_SETTING,
                           touch_control(REFERENCE_SETTING, COLUMN_END),
                           prefix=NICE, folder=tf_ref)
-    if "column" in args.cases:
-        for n in args.sizes:
-            for element in args.elements:
-                run_calculix("column", n, element)
-            for setting in args.settings:
-                run_touchfoam("column", "twistingColumn", n, setting,
-                              touch_control(setting, COLUMN_END))
-    if "cube" in args.cases:
-        for n in args.cube_sizes:
-            for element in args.cube_elements:
-                run_calculix("cube", n, element)
-            for setting in args.cube_settings:
-                run_touchfoam("cube", "swingingCube", n, setting,
-                              touch_control(setting, CUBE_END,
-                                            {"writePrecision": 17}))
+    for r in range(args.repeat):
+        if args.repeat > 1:
+            print("repeat %d of %d" % (r + 1, args.repeat), flush=True)
+        if "column" in args.cases:
+            for n in args.sizes:
+                for element in args.elements:
+                    run_calculix("column", n, element, repeat=r)
+                for setting in args.settings:
+                    run_touchfoam("column", "twistingColumn", n, setting,
+                                  touch_control(setting, COLUMN_END),
+                                  repeat=r)
+        if "cube" in args.cases:
+            for n in args.cube_sizes:
+                for element in args.cube_elements:
+                    run_calculix("cube", n, element, repeat=r)
+                for setting in args.cube_settings:
+                    run_touchfoam("cube", "swingingCube", n, setting,
+                                  touch_control(setting, CUBE_END,
+                                                {"writePrecision": 17}),
+                                  repeat=r)
 
 
 def build_label(given=None):
@@ -562,7 +596,12 @@ def main():
                         help="name of the touchFoam build in the PATH")
     parser.add_argument("--no-run", action="store_true",
                         help="only analyse the existing runs/")
+    parser.add_argument("--repeat", type=int, default=1,
+                        help="runs of every job, round robin; the medians "
+                        "of their times are reported")
     args = parser.parse_args()
+    if args.repeat < 1:
+        parser.error("--repeat must be at least 1, not %d" % args.repeat)
     args.sizes, args.cube_sizes = sorted(args.sizes), sorted(args.cube_sizes)
     try:
         if not args.no_run:
@@ -574,7 +613,8 @@ def main():
                    "command": " ".join(sys.argv),
                    "build": build_label(args.build_label),
                    "ccx": ccx.version(),
-                   "threads": 1}
+                   "threads": 1,
+                   "repeat": args.repeat}
         if "column" in args.cases:
             results["column"] = analyse_column(args)
         if "cube" in args.cases:

@@ -35,6 +35,24 @@ Foam::vector Foam::angularMomentum::total
 }
 
 
+Foam::vector Foam::angularMomentum::total
+(
+    const vectorField& X,
+    const vectorField& u,
+    const vectorField& p
+) const
+{
+    vector L(Zero);
+
+    forAll(V_, a)
+    {
+        L += V_[a]*((X[a] + u[a]) ^ p[a]);
+    }
+
+    return returnReduce(L, sumOp<vector>());
+}
+
+
 template<class Momentum>
 Foam::angularMomentum::rigidMoments Foam::angularMomentum::moments
 (

@@ -131,8 +131,6 @@ void Foam::touchSolid::computeRates(const label stage)
         power_ = returnReduce(update_->boundaryPower(), sumOp<scalar>());
     }
 
-    const scalarField& V = mesh_.V();
-
     if (debug)
     {
         // The semi-discrete energy balance: the compatible update's rate is
@@ -145,9 +143,6 @@ void Foam::touchSolid::computeRates(const label stage)
         Info<< "touchSolid: stage " << stage << " energy rate: kinetic "
             << kinetic << ", stored " << stored << endl;
     }
-
-    lmRate_ /= V;
-    FRate_ /= V;
 }
 
 
@@ -155,9 +150,7 @@ Foam::label Foam::touchSolid::firstInvalidCell() const
 {
     forAll(F_, celli)
     {
-        const scalar J = det(F_[celli]);
-
-        if (!(J > 0) || !std::isfinite(J) || !std::isfinite(mag(lm_[celli])))
+        if (!validCell(F_[celli], lm_[celli]))
         {
             return celli;
         }
@@ -246,6 +239,8 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     pointU0_(mesh.nPoints()),
     lmRate_(mesh.nCells()),
     FRate_(mesh.nCells()),
+    inverseVolumes_(1/mesh.V().field()),
+    invalidCell_(-1),
     torque_(Zero),
     power_(0),
     L0_(Zero),
@@ -285,10 +280,10 @@ bool Foam::touchSolid::advance(const scalar dt)
     {
         advanceStage(stage, dt);
 
-        // The next stage evaluates the stress of every cell: det F > 0
-        if (!valid())
+        // Every rank restores, so that all of them retry the step alike
+        if (!returnReduce(invalidCell_ < 0, andOp<bool>()))
         {
-            const label celli = firstInvalidCell();
+            const label celli = invalidCell_;
             if (celli >= 0)
             {
                 Pout<< "touchSolid: cell " << celli << " at "
@@ -342,16 +337,18 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
     vectorField& pointU = pointU_.primitiveFieldRef();
     const vectorField& pointV = pointV_.primitiveField();
 
-    // u first: it advances with the stage momentum
-    forAll(u, celli)
-    {
-        u[celli] =
-            alpha*u0_[celli] + beta*(u[celli] + (dt/rho)*lm[celli]);
-    }
+    // The rates are the cells' totals: 1/V is applied here, in the pass
+    // that uses them, rather than in passes of their own. u advances with
+    // the stage momentum, so before lm
+    const scalarField& invV = inverseVolumes_;
+    const scalar dtByRho = dt/rho;
 
     forAll(F, celli)
     {
-        F[celli] = alpha*F0_[celli] + beta*(F[celli] + dt*FRate_[celli]);
+        u[celli] = alpha*u0_[celli] + beta*(u[celli] + dtByRho*lm[celli]);
+        F[celli] =
+            alpha*F0_[celli]
+          + beta*(F[celli] + (dt*invV[celli])*FRate_[celli]);
     }
     forAll(pointU, pointi)
     {
@@ -360,6 +357,8 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
     }
 
     law_->advanceStage(alpha);
+
+    bool ratePerVolume = false;
 
     if (preserveAngularMomentum_)
     {
@@ -377,6 +376,10 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
 
         if (stage == rungeKutta_.nStages())
         {
+            // The correction works on the rate per volume
+            lmRate_ *= invV;
+            ratePerVolume = true;
+
             // F and the law's state are at the step's end: what is left
             // of the energy budget is the kinetic energy the correction
             // may reach
@@ -393,9 +396,17 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
         }
     }
 
+    // The last pass of the stage checks the cells too (J > 0, finite)
+    invalidCell_ = -1;
     forAll(lm, celli)
     {
-        lm[celli] = alpha*lm0_[celli] + beta*(lm[celli] + dt*lmRate_[celli]);
+        const scalar scale = ratePerVolume ? dt : dt*invV[celli];
+        lm[celli] = alpha*lm0_[celli] + beta*(lm[celli] + scale*lmRate_[celli]);
+
+        if (invalidCell_ < 0 && !validCell(F[celli], lm[celli]))
+        {
+            invalidCell_ = celli;
+        }
     }
 }
 
@@ -418,7 +429,17 @@ void Foam::touchSolid::restoreOldTime()
 
 Foam::vector Foam::touchSolid::totalLinearMomentum() const
 {
-    return gSum(mesh_.V()*lm_.primitiveField());
+    // The totals are summed in place: the monitor asks for them every step
+    const scalarField& V = mesh_.V();
+    const vectorField& lm = lm_.primitiveField();
+
+    vector sum(Zero);
+    forAll(lm, celli)
+    {
+        sum += V[celli]*lm[celli];
+    }
+
+    return returnReduce(sum, sumOp<vector>());
 }
 
 
@@ -427,7 +448,8 @@ Foam::vector Foam::touchSolid::totalAngularMomentum(const point& origin) const
     return
         angularMomentum_.total
         (
-            cellPositions(u_.primitiveField()),
+            mesh_.C().primitiveField(),
+            u_.primitiveField(),
             lm_.primitiveField()
         )
       - (origin ^ totalLinearMomentum());
@@ -436,7 +458,16 @@ Foam::vector Foam::touchSolid::totalAngularMomentum(const point& origin) const
 
 Foam::scalar Foam::touchSolid::kineticEnergy() const
 {
-    return gSum(mesh_.V()*magSqr(lm_.primitiveField()))/(2*law_->rho());
+    const scalarField& V = mesh_.V();
+    const vectorField& lm = lm_.primitiveField();
+
+    scalar sum = 0;
+    forAll(lm, celli)
+    {
+        sum += V[celli]*magSqr(lm[celli]);
+    }
+
+    return returnReduce(sum, sumOp<scalar>())/(2*law_->rho());
 }
 
 
