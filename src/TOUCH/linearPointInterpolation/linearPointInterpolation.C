@@ -195,7 +195,7 @@ void Foam::linearPointInterpolation::addTranspose
     vectorField& shares = pointWork_;
     forAll(shares, pointi)
     {
-        shares[pointi] = pointValues[pointi]/nPointCells_[pointi];
+        shares[pointi] = (1/nPointCells_[pointi])*pointValues[pointi];
     }
 
     // Processor faces: this side's share leaves the cell here, and the

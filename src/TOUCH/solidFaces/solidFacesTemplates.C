@@ -17,57 +17,59 @@ void Foam::solidFaces::forAllCoupled(Op op) const
     const labelUList& nei = mesh_.neighbour();
     const vectorField& Sf = mesh_.faceAreas();
     const vectorField& Cf = mesh_.faceCentres();
-    const surfaceScalarField& magSfs = mesh_.magSf();
+    const scalarField& magSf = mesh_.magSf().primitiveField();
 
-    auto visit = [&]
-    (
-        const label facei,
-        const label o,
-        const label n,
-        const scalar magSf,
-        const cellValues& left,
-        const cellValues& right
-    )
+    forAll(own, facei)
     {
+        const cellValues left(cell(own[facei]));
+        const cellValues right(cell(nei[facei]));
+
         op
         (
             coupledFace
             {
-                facei, o, n, left, right,
-                Sf[facei], magSf, Cf[facei] - left.X, Cf[facei] - right.X
+                facei, own[facei], nei[facei], left, right,
+                Sf[facei], magSf[facei],
+                Cf[facei] - left.X, Cf[facei] - right.X
             }
         );
-    };
-
-    forAll(own, facei)
-    {
-        visit
-        (
-            facei, own[facei], nei[facei], magSfs[facei],
-            cell(own[facei]), cell(nei[facei])
-        );
     }
+
+    forAllCoupledPatchFaces(op);
+}
+
+
+template<class Op>
+void Foam::solidFaces::forAllCoupledPatchFaces(Op op) const
+{
+    const vectorField& Sf = mesh_.faceAreas();
+    const vectorField& Cf = mesh_.faceCentres();
+    const surfaceScalarField& magSfs = mesh_.magSf();
 
     forAll(mesh_.boundary(), patchi)
     {
         const fvPatch& patch = mesh_.boundary()[patchi];
-
-        if (patch.coupled())
+        if (!patch.coupled())
         {
-            const labelUList& faceCells = patch.faceCells();
+            continue;
+        }
 
-            forAll(faceCells, i)
-            {
-                visit
-                (
-                    patch.start() + i,
-                    faceCells[i],
-                    -1,
-                    magSfs.boundaryField()[patchi][i],
-                    cell(faceCells[i]),
-                    neighbour(patchi, i)
-                );
-            }
+        const labelUList& faceCells = patch.faceCells();
+        forAll(faceCells, i)
+        {
+            const label facei = patch.start() + i;
+            const cellValues left(cell(faceCells[i]));
+            const cellValues right(neighbour(patchi, i));
+
+            op
+            (
+                coupledFace
+                {
+                    facei, faceCells[i], -1, left, right,
+                    Sf[facei], magSfs.boundaryField()[patchi][i],
+                    Cf[facei] - left.X, Cf[facei] - right.X
+                }
+            );
         }
     }
 }

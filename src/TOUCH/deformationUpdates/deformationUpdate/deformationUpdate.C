@@ -66,7 +66,7 @@ void Foam::deformationUpdate::addFaceMeanFRate
                 {
                     sum += pointV[pointi];
                 }
-                flux = sum*(Sf[facei]/f.size());
+                flux = sum*((scalar(1)/f.size())*Sf[facei]);
             }
             else
             {

@@ -108,7 +108,8 @@ void Foam::linearReconstruction::calcWeights()
             forAll(Xn, i)
             {
                 const vector d(Xn[i] - C[faceCells[i]]);
-                w[i] = (Minv[faceCells[i]] & d)/magSqr(d);
+                // As weight(): the same round-off as an interior face's
+                w[i] = (Minv[faceCells[i]] & d)*(1/magSqr(d));
             }
         }
     }
