@@ -33,7 +33,11 @@ Description
     - (f) restoreOldTime() after stages returns the state bit for bit,
     - the stored energy with the state: dE/dF = P,
     - (g) yieldStress <= 0 and hardeningModulus < 0 refused naming the file,
-      the entry and the range; hardeningModulus 0 accepted.
+      the entry and the range; hardeningModulus 0 accepted; an unknown
+      yieldStressMeasure refused naming the valid choices,
+    - (h) in confined compression (J = 0.8) the von Mises Kirchhoff stress
+      is the yield stress with yieldStressMeasure Kirchhoff, the von Mises
+      Cauchy stress with Cauchy.
     Exits non-zero on any wrong answer.
 
 Usage
@@ -577,6 +581,9 @@ int main(int argc, char *argv[])
 
 
     checkUniaxial(mesh, rnd, F, P, report);
+
+
+    checkYieldMeasure(mesh, report);
 
 
     checkEntries(mesh, report);

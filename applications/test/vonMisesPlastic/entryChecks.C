@@ -50,6 +50,20 @@ void Foam::plasticTest::checkEntries(const fvMesh& mesh, testReport& report)
     }
     {
         dictionary dict(material(sigmaY, H));
+        dict.add("yieldStressMeasure", "PK2");
+        const string msg(errorMessage(dict));
+        Info<< "    yieldStressMeasure PK2 gives: " << msg.c_str() << nl;
+        report.check
+        (
+            "yieldStressMeasure PK2 is refused naming the entry and choices",
+            msg.find("'yieldStressMeasure'") != string::npos
+         && msg.find("mechanicalProperties") != string::npos
+         && msg.find("Kirchhoff") != string::npos
+         && msg.find("Cauchy") != string::npos
+        );
+    }
+    {
+        dictionary dict(material(sigmaY, H));
         dict.remove("yieldStress");
         const string msg(errorMessage(dict));
         report.check

@@ -131,6 +131,26 @@ void Foam::mechanicalLaws::vonMisesPlastic::eigen
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+bool Foam::mechanicalLaws::vonMisesPlastic::readYieldStressMeasure() const
+{
+    const word measure
+    (
+        getOrDefault<word>("yieldStressMeasure", "Kirchhoff")
+    );
+
+    if (measure != "Kirchhoff" && measure != "Cauchy")
+    {
+        FatalIOErrorInFunction(*this)
+            << "Entry 'yieldStressMeasure' = " << measure << " in "
+            << objectPath() << " is not valid: valid choices are Kirchhoff"
+            << " (the default) and Cauchy" << nl
+            << exit(FatalIOError);
+    }
+
+    return measure == "Cauchy";
+}
+
+
 Foam::scalar Foam::mechanicalLaws::vonMisesPlastic::elasticEnergy
 (
     const symmTensor& tau,
@@ -153,6 +173,7 @@ Foam::mechanicalLaws::vonMisesPlastic::vonMisesPlastic
     mechanicalLaw(mesh, dict),
     yieldStress_(readBounded("yieldStress", 0, GREAT)),
     hardeningModulus_(readBounded("hardeningModulus", 0, GREAT, true)),
+    yieldOnCauchy_(readYieldStressMeasure()),
     CpInv_
     (
         IOobject
@@ -193,7 +214,8 @@ Foam::mechanicalLaws::vonMisesPlastic::vonMisesPlastic
     epsilonP_.correctBoundaryConditions();
 
     Info<< "vonMisesPlastic: yield stress " << yieldStress_
-        << ", hardening modulus " << hardeningModulus_
+        << " (on the " << (yieldOnCauchy_ ? "Cauchy" : "Kirchhoff")
+        << " stress), hardening modulus " << hardeningModulus_
         << ", max equivalent plastic strain " << gMax(epsilonP_) << endl;
 }
 
@@ -253,14 +275,18 @@ bool Foam::mechanicalLaws::vonMisesPlastic::returnMapping
     tensor n;
     elasticTrial(F, CpInv, lnLambda, tauDev, n);
 
+    // A yield stress on the Cauchy stress tau/J bounds tau by J times it
+    // (J = det F: the plastic flow is isochoric)
+    const scalar scale = yieldOnCauchy_ ? det(F) : 1;
     const scalar tauEq = Foam::sqrt(1.5)*mag(tauDev);
-    const scalar f = tauEq - (yieldStress_ + hardeningModulus_*epsilonP);
+    const scalar f =
+        tauEq - scale*(yieldStress_ + hardeningModulus_*epsilonP);
     const bool plastic = (f > 0);
 
     if (plastic)
     {
         // Radial return along nu = sqrt(3/2) tau'/|tau'| = (3/2) tau'/tauEq
-        const scalar dgamma = f/(3*mu_ + hardeningModulus_);
+        const scalar dgamma = f/(3*mu_ + scale*hardeningModulus_);
         const vector lnLambdaE(lnLambda - (1.5*dgamma/tauEq)*tauDev);
 
         tauDev *= 1 - 3*mu_*dgamma/tauEq;
