@@ -44,6 +44,15 @@ static inline scalar jumpShare(const vector& reconstructed, const vector& cell)
     return min(max((reconstructed & cell)/cellSqr, scalar(0)), scalar(1));
 }
 
+//- 1/n for a face of n points, without a division for the usual sizes
+static inline scalar inverseSize(const label n)
+{
+    static const scalar inverses[] =
+        {0, 1, 1.0/2, 1.0/3, 1.0/4, 1.0/5, 1.0/6, 1.0/7, 1.0/8};
+
+    return n <= 8 ? inverses[n] : 1.0/n;
+}
+
 //- Add a face's force to its points, an equal share each
 static inline void spreadToPoints
 (
@@ -106,6 +115,78 @@ inline Foam::vector Foam::deformationUpdates::compatible::upwindForce
 }
 
 
+inline void Foam::deformationUpdates::compatible::addFaceForces
+(
+    const label facei,
+    const tensor& PJump,
+    const bool reconstructed
+)
+{
+    // The central nodal forces of both sides, (P_L - P_R) & s_a at each
+    // point a of the face, and, at faces that are not a condition's, the
+    // reconstructed traction forces in equal shares
+    const Foam::face& f = faces_.mesh().faces()[facei];
+    const vector& S = faces_.mesh().faceAreas()[facei];
+    const vector central(PJump & S);
+    const scalar invSize = inverseSize(f.size());
+
+    if (shares_.uniform())
+    {
+        const vector share(central*invSize);
+        for (const label pointi : f)
+        {
+            pointForce_[pointi] += share;
+        }
+    }
+    else
+    {
+        shares_.forAllPoints
+        (
+            f, facei, S,
+            [&](const label pointi, const vector& s)
+            {
+                pointForce_[pointi] += PJump & s;
+            }
+        );
+    }
+
+    if (reconstructed)
+    {
+        const vector share((central + faceIncrementForce_[facei])*invSize);
+        for (const label pointi : f)
+        {
+            reconstructedForce_[pointi] += share;
+        }
+    }
+}
+
+
+void Foam::deformationUpdates::compatible::addBoundaryFaceForces()
+{
+    // The interior faces' are added by the face loop (addFaceRates)
+    const fvMesh& mesh = faces_.mesh();
+    const tensorField& P = faces_.P().primitiveField();
+    const bool upwindPoints = pointUpwinding_ > 0;
+
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh.boundary()[patchi];
+        const labelUList& faceCells = patch.faceCells();
+
+        // Each side of a processor face adds its own part
+        forAll(faceCells, i)
+        {
+            addFaceForces
+            (
+                patch.start() + i,
+                P[faceCells[i]],
+                upwindPoints && patch.coupled()
+            );
+        }
+    }
+}
+
+
 void Foam::deformationUpdates::compatible::addFaceRates
 (
     vectorField& lmRate
@@ -130,11 +211,15 @@ void Foam::deformationUpdates::compatible::addFaceRates
     const tensorField& gradp =
         faces_.reconstruction().gradp().primitiveField();
     const vectorField& u = faces_.u().primitiveField();
+    const tensorField& P = faces_.P().primitiveField();
+    const bool upwindPoints = pointUpwinding_ > 0;
 
     forAll(own, facei)
     {
         const label o = own[facei];
         const label n = nei[facei];
+
+        addFaceForces(facei, P[o] - P[n], upwindPoints);
 
         vector jump(p[n] - p[o]);
         if (spinning)
@@ -465,6 +550,7 @@ Foam::deformationUpdates::compatible::compatible
         calcPointMobility(faces.mesh(), pointUpwinding_, law.rho()*law.Up())
     ),
     reconstructedForce_(pointUpwinding_ > 0 ? faces.mesh().nPoints() : 0),
+    faceIncrementForce_(pointUpwinding_ > 0 ? faces.mesh().nFaces() : 0),
     upwindNormal_(0),
     upwindTangential_(0),
     upwindInline_(riemann.upwindCoefficients(upwindNormal_, upwindTangential_))
@@ -503,6 +589,7 @@ void Foam::deformationUpdates::compatible::rates
     constraints_.reset();
 
     addFaceRates(lmRate);
+    addBoundaryFaceForces();
     addBoundaryRate(stage, lmRate, torque);
 
     constraints_.finalise();

@@ -14,23 +14,6 @@ Description
 #include "compatible.H"
 #include "syncTools.H"
 
-// * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
-
-namespace Foam
-{
-
-//- 1/n for a face of n points, without a division for the usual sizes
-static inline scalar inverseSize(const label n)
-{
-    static const scalar inverses[] =
-        {0, 1, 1.0/2, 1.0/3, 1.0/4, 1.0/5, 1.0/6, 1.0/7, 1.0/8};
-
-    return n <= 8 ? inverses[n] : 1.0/n;
-}
-
-} // End namespace Foam
-
-
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 void Foam::deformationUpdates::compatible::addCellForces
@@ -39,78 +22,54 @@ void Foam::deformationUpdates::compatible::addCellForces
     const tensor* dPf
 )
 {
+    // The nodal forces themselves are added face by face (addFaceForces):
+    // the cell gives only what needs its stress gradient, the force of the
+    // stress increment to each face, summed over the face's two sides, and
+    // the interior traction of its boundary-condition faces
     const fvMesh& mesh = faces_.mesh();
     const label nInternal = mesh.nInternalFaces();
     const labelUList& own = mesh.owner();
-    const faceList& faces = mesh.faces();
     const vectorField& Sf = mesh.faceAreas();
-    const tensor& Pc = faces_.P()[celli];
     const bool upwindPoints = pointUpwinding_ > 0;
-    const bool uniform = shares_.uniform();
 
     label k = -1;
     for (const label facei : cellFaces_[celli])
     {
         ++k;
-        const bool interior = facei < nInternal;
-        label patchi = -1;
-        if (!interior)
+        if (facei < nInternal)
         {
-            patchi = mesh.boundaryMesh().whichPatch(facei);
-            if (mesh.boundary()[patchi].size() == 0)
+            if (upwindPoints)
             {
-                // empty: no flux, no force
-                continue;
+                // The area vector out of this cell
+                const vector& S = Sf[facei];
+                faceIncrementForce_[facei] +=
+                    own[facei] == celli ? (dPf[k] & S) : -(dPf[k] & S);
             }
+            continue;
         }
 
-        // The area vector out of this cell
-        const bool owner = !interior || own[facei] == celli;
-        const vector S(owner ? Sf[facei] : -Sf[facei]);
-        const Foam::face& f = faces[facei];
-        const scalar invSize = inverseSize(f.size());
-
-        // The central nodal forces: this cell's stress on its side of the
-        // face (the neighbour adds its own, on this rank or another)
-        const vector central(Pc & S);
-
-        // This cell's reconstructed traction force at the face
-        const vector reconstructed(central + (dPf[k] & S));
-
-        if (uniform)
+        const label patchi = mesh.boundaryMesh().whichPatch(facei);
+        const fvPatch& patch = mesh.boundary()[patchi];
+        if (patch.size() == 0)
         {
-            const vector force(central*invSize);
-            for (const label pointi : f)
+            // empty: no flux, no force
+            continue;
+        }
+
+        const vector& S = Sf[facei];
+        if (patch.coupled())
+        {
+            if (upwindPoints)
             {
-                pointForce_[pointi] += force;
+                faceIncrementForce_[facei] = dPf[k] & S;
             }
         }
         else
         {
-            shares_.forAllPoints
-            (
-                f, facei, Sf[facei],
-                [&](const label pointi, const vector& s)
-                {
-                    pointForce_[pointi] += Pc & (owner ? s : -s);
-                }
-            );
-        }
-
-        if (!interior && !mesh.boundary()[patchi].coupled())
-        {
             // The interior traction a boundary condition answers
-            const label i = facei - mesh.boundary()[patchi].start();
+            const label i = facei - patch.start();
             faces_.interiorTraction(patchi)[i] =
-                reconstructed/mesh.boundary()[patchi].magSf()[i];
-        }
-        else if (upwindPoints)
-        {
-            const vector share(reconstructed*invSize);
-            for (const label pointi : f)
-            {
-                reconstructedForce_[pointi] += share;
-            }
+                ((faces_.P()[celli] + dPf[k]) & S)/patch.magSf()[i];
         }
     }
 }
@@ -141,6 +100,7 @@ void Foam::deformationUpdates::compatible::reconstruct
     // face loop no longer reads them
     pointForce_ = Zero;
     reconstructedForce_ = Zero;
+    faceIncrementForce_ = Zero;
 
     reconstruction.update
     (
