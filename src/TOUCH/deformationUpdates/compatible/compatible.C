@@ -118,6 +118,8 @@ inline Foam::vector Foam::deformationUpdates::compatible::upwindForce
 inline void Foam::deformationUpdates::compatible::addFaceForces
 (
     const label facei,
+    const Foam::face& f,
+    const vector& S,
     const tensor& PJump,
     const bool reconstructed
 )
@@ -125,8 +127,6 @@ inline void Foam::deformationUpdates::compatible::addFaceForces
     // The central nodal forces of both sides, (P_L - P_R) & s_a at each
     // point a of the face, and, at faces that are not a condition's, the
     // reconstructed traction forces in equal shares
-    const Foam::face& f = faces_.mesh().faces()[facei];
-    const vector& S = faces_.mesh().faceAreas()[facei];
     const vector central(PJump & S);
     const scalar invSize = inverseSize(f.size());
 
@@ -165,6 +165,8 @@ void Foam::deformationUpdates::compatible::addBoundaryFaceForces()
 {
     // The interior faces' are added by the face loop (addFaceRates)
     const fvMesh& mesh = faces_.mesh();
+    const faceList& faces = mesh.faces();
+    const vectorField& Sf = mesh.faceAreas();
     const tensorField& P = faces_.P().primitiveField();
     const bool upwindPoints = pointUpwinding_ > 0;
 
@@ -174,13 +176,14 @@ void Foam::deformationUpdates::compatible::addBoundaryFaceForces()
         const labelUList& faceCells = patch.faceCells();
 
         // Each side of a processor face adds its own part
+        const bool reconstructed = upwindPoints && patch.coupled();
         forAll(faceCells, i)
         {
+            const label facei = patch.start() + i;
             addFaceForces
             (
-                patch.start() + i,
-                P[faceCells[i]],
-                upwindPoints && patch.coupled()
+                facei, faces[facei], Sf[facei], P[faceCells[i]],
+                reconstructed
             );
         }
     }
@@ -212,6 +215,7 @@ void Foam::deformationUpdates::compatible::addFaceRates
         faces_.reconstruction().gradp().primitiveField();
     const vectorField& u = faces_.u().primitiveField();
     const tensorField& P = faces_.P().primitiveField();
+    const faceList& faces = mesh.faces();
     const bool upwindPoints = pointUpwinding_ > 0;
 
     forAll(own, facei)
@@ -219,7 +223,10 @@ void Foam::deformationUpdates::compatible::addFaceRates
         const label o = own[facei];
         const label n = nei[facei];
 
-        addFaceForces(facei, P[o] - P[n], upwindPoints);
+        addFaceForces
+        (
+            facei, faces[facei], Sf[facei], P[o] - P[n], upwindPoints
+        );
 
         vector jump(p[n] - p[o]);
         if (spinning)

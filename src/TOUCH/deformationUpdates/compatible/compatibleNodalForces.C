@@ -16,61 +16,36 @@ Description
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
-void Foam::deformationUpdates::compatible::addCellForces
+void Foam::deformationUpdates::compatible::addBoundaryCellForce
 (
     const label celli,
-    const tensor* dPf
+    const label facei,
+    const tensor& dPf
 )
 {
-    // The nodal forces themselves are added face by face (addFaceForces):
-    // the cell gives only what needs its stress gradient, the force of the
-    // stress increment to each face, summed over the face's two sides, and
-    // the interior traction of its boundary-condition faces
     const fvMesh& mesh = faces_.mesh();
-    const label nInternal = mesh.nInternalFaces();
-    const labelUList& own = mesh.owner();
-    const vectorField& Sf = mesh.faceAreas();
-    const bool upwindPoints = pointUpwinding_ > 0;
-
-    label k = -1;
-    for (const label facei : cellFaces_[celli])
+    const label patchi = mesh.boundaryMesh().whichPatch(facei);
+    const fvPatch& patch = mesh.boundary()[patchi];
+    if (patch.size() == 0)
     {
-        ++k;
-        if (facei < nInternal)
-        {
-            if (upwindPoints)
-            {
-                // The area vector out of this cell
-                const vector& S = Sf[facei];
-                faceIncrementForce_[facei] +=
-                    own[facei] == celli ? (dPf[k] & S) : -(dPf[k] & S);
-            }
-            continue;
-        }
+        // empty: no flux, no force
+        return;
+    }
 
-        const label patchi = mesh.boundaryMesh().whichPatch(facei);
-        const fvPatch& patch = mesh.boundary()[patchi];
-        if (patch.size() == 0)
+    const vector& S = mesh.faceAreas()[facei];
+    if (patch.coupled())
+    {
+        if (pointUpwinding_ > 0)
         {
-            // empty: no flux, no force
-            continue;
+            faceIncrementForce_[facei] = dPf & S;
         }
-
-        const vector& S = Sf[facei];
-        if (patch.coupled())
-        {
-            if (upwindPoints)
-            {
-                faceIncrementForce_[facei] = dPf[k] & S;
-            }
-        }
-        else
-        {
-            // The interior traction a boundary condition answers
-            const label i = facei - patch.start();
-            faces_.interiorTraction(patchi)[i] =
-                ((faces_.P()[celli] + dPf[k]) & S)/patch.magSf()[i];
-        }
+    }
+    else
+    {
+        // The interior traction a boundary condition answers
+        const label i = facei - patch.start();
+        faces_.interiorTraction(patchi)[i] =
+            ((faces_.P()[celli] + dPf) & S)/patch.magSf()[i];
     }
 }
 
@@ -102,13 +77,43 @@ void Foam::deformationUpdates::compatible::reconstruct
     reconstructedForce_ = Zero;
     faceIncrementForce_ = Zero;
 
+    // The nodal forces themselves are added face by face (addFaceForces):
+    // a cell gives only what needs its stress gradient, the force of the
+    // stress increment to each of its faces, summed over the face's two
+    // sides, and the interior traction of its boundary-condition faces
+    const fvMesh& mesh = faces_.mesh();
+    const label nInternal = mesh.nInternalFaces();
+    const labelUList& own = mesh.owner();
+    const vectorField& Sf = mesh.faceAreas();
+    const compactAddressing::rows& cellFaces = cellFaces_;
+    const bool upwindPoints = pointUpwinding_ > 0;
+    vector* incrementForce = faceIncrementForce_.data();
+
     reconstruction.update
     (
         lm,
         P,
         [&](const label celli, const tensor* dPf)
         {
-            addCellForces(celli, dPf);
+            label k = 0;
+            for (const label facei : cellFaces[celli])
+            {
+                if (facei < nInternal)
+                {
+                    if (upwindPoints)
+                    {
+                        // The area vector out of this cell
+                        const vector dForce(dPf[k] & Sf[facei]);
+                        incrementForce[facei] +=
+                            own[facei] == celli ? dForce : -dForce;
+                    }
+                }
+                else
+                {
+                    addBoundaryCellForce(celli, facei, dPf[k]);
+                }
+                ++k;
+            }
         }
     );
 }
