@@ -97,17 +97,39 @@ inline Foam::vector Foam::deformationUpdates::compatible::upwindForce
     // The central traction is the point coupling's; the upwind part damps
     // the share of the cell jump the reconstruction keeps: the flux of the
     // jump alone
-    const vector dp(upwindShare(reconstructedJump, cellJump)*cellJump);
-
     if (upwindInline_)
     {
         // With m = cof(F_L + F_R) S_f, the spatial normal's projector
-        // n n = m m/|m|^2: no square root
+        // n n = m m/|m|^2: no square root. The share phi = a/c, a the
+        // reconstructed jump along the cell jump clipped to [0, c], c =
+        // |cell jump|^2 (jumpShare), and 1/|m|^2 come from one division:
+        // the face loop waited on two, one after the other
+        const scalar c = magSqr(cellJump);
+        const scalar a =
+            min(max(reconstructedJump & cellJump, scalar(0)), c);
+        const vector m(cof(FSum) & Sf);
+        const scalar mSqr = magSqr(m);
+        const scalar denominator = c*c*mSqr;
+
+        if (denominator < VSMALL)
+        {
+            // No jump (the share is 0), or one too small to divide by
+            // (a non-finite one goes on, to be caught with the cell)
+            return Zero;
+        }
+
+        // share/|m|^2: phi^2/|m|^2 = a^2/(c^2 |m|^2), phi/|m|^2 = a c/(..)
+        const scalar inverse = 1/denominator;
+        const scalar shareByMSqr = (quadraticShare_ ? a*a : a*c)*inverse;
         const scalar cN = upwindNormal_;
         const scalar cT = upwindTangential_;
-        const vector m(cof(FSum) & Sf);
-        return magSf*(cT*dp + ((cN - cT)*(m & dp)/magSqr(m))*m);
+
+        return
+            (magSf*shareByMSqr)
+           *(cT*mSqr*cellJump + ((cN - cT)*(m & cellJump))*m);
     }
+
+    const vector dp(upwindShare(reconstructedJump, cellJump)*cellJump);
 
     return
         magSf
