@@ -20,10 +20,9 @@ Foam::linearPointInterpolation::linearPointInterpolation
 :
     mesh_(mesh),
     reconstruction_(reconstruction),
-    nPointCells_(mesh.nPoints(), Zero),
+    inverseNPointCells_(mesh.nPoints(), Zero),
     cellWork_(),
     boundaryFaceWork_(mesh.nBoundaryFaces()),
-    pointWork_(mesh.nPoints()),
     limited_(limited)
 {
     if
@@ -40,15 +39,16 @@ Foam::linearPointInterpolation::linearPointInterpolation
     }
 
     const labelList sizes(compactAddressing::New(mesh_).pointCells().sizes());
+    scalarField& n = inverseNPointCells_;
     forAll(sizes, pointi)
     {
-        nPointCells_[pointi] = sizes[pointi];
+        n[pointi] = sizes[pointi];
     }
 
-    syncTools::syncPointList
-    (
-        mesh_, nPointCells_, plusEqOp<scalar>(), scalar(0)
-    );
+    syncTools::syncPointList(mesh_, n, plusEqOp<scalar>(), scalar(0));
+
+    // Every point has a cell
+    n = 1/n;
 }
 
 
@@ -171,7 +171,7 @@ void Foam::linearPointInterpolation::extrapolate
 
     forAll(pointValues, pointi)
     {
-        pointValues[pointi] *= scale/nPointCells_[pointi];
+        pointValues[pointi] *= scale*inverseNPointCells_[pointi];
     }
 }
 
@@ -192,11 +192,7 @@ void Foam::linearPointInterpolation::addTranspose
     const label nInternal = mesh_.nInternalFaces();
     const polyBoundaryMesh& patches = mesh_.boundaryMesh();
 
-    vectorField& shares = pointWork_;
-    forAll(shares, pointi)
-    {
-        shares[pointi] = (1/nPointCells_[pointi])*pointValues[pointi];
-    }
+    const scalarField& inverseN = inverseNPointCells_;
 
     // Processor faces: this side's share leaves the cell here, and the
     // neighbour's share arrives from the other rank
@@ -211,7 +207,8 @@ void Foam::linearPointInterpolation::addTranspose
         tensor H(Zero);
         for (const label pointi : cellPoints[celli])
         {
-            const vector& share = shares[pointi];
+            // The point's share f_a/n_a
+            const vector share(inverseN[pointi]*pointValues[pointi]);
             sum += share;
             H += share*(points[pointi] - X[celli]);
         }
@@ -235,7 +232,8 @@ void Foam::linearPointInterpolation::addTranspose
                     own[facei] == celli ? nei[facei] : own[facei];
                 const vector q
                 (
-                    H & reconstruction_.weight(celli, X[other] - X[celli])
+                    H
+                  & reconstruction_.weight(celli, facei, X[other] - X[celli])
                 );
                 cellValues[other] += q;
                 cellValues[celli] -= q;

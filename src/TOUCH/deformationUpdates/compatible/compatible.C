@@ -44,15 +44,6 @@ static inline scalar jumpShare(const vector& reconstructed, const vector& cell)
     return min(max((reconstructed & cell)/cellSqr, scalar(0)), scalar(1));
 }
 
-//- 1/n for a face of n points, without a division for the usual sizes
-static inline scalar inverseSize(const label n)
-{
-    static const scalar inverses[] =
-        {0, 1, 1.0/2, 1.0/3, 1.0/4, 1.0/5, 1.0/6, 1.0/7, 1.0/8};
-
-    return n <= 8 ? inverses[n] : 1.0/n;
-}
-
 //- Add a face's force to its points, an equal share each
 static inline void spreadToPoints
 (
@@ -150,7 +141,7 @@ inline void Foam::deformationUpdates::compatible::addFaceForces
     // point a of the face, and, at faces that are not a condition's, the
     // reconstructed traction forces in equal shares
     const vector central(PJump & S);
-    const scalar invSize = inverseSize(f.size());
+    const scalar invSize = facePointShares::inverseSize(f.size());
 
     if (shares_.uniform())
     {

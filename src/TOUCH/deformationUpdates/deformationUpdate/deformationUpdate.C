@@ -66,7 +66,7 @@ void Foam::deformationUpdate::addFaceMeanFRate
                 {
                     sum += pointV[pointi];
                 }
-                flux = sum*((scalar(1)/f.size())*Sf[facei]);
+                flux = sum*(facePointShares::inverseSize(f.size())*Sf[facei]);
             }
             else
             {

@@ -38,6 +38,9 @@ void Foam::linearReconstruction::calcWeights()
         const symmTensor wdd(sqr(d)/magSqr(d));
         M[own[facei]] += wdd;
         M[nei[facei]] += wdd;
+
+        // As weight(): 1/|d|^2, the same from either side
+        inverseDistanceSqr_[facei] = 1/magSqr(d);
     }
 
     forAll(mesh_.boundary(), patchi)
@@ -138,6 +141,7 @@ Foam::linearReconstruction::linearReconstruction
     PNeighbour_(mesh.boundary().size()),
     neighbourCentres_(mesh.boundary().size()),
     Minv_(mesh.nCells()),
+    inverseDistanceSqr_(mesh.nInternalFaces()),
     coupledWeights_(mesh.boundary().size()),
     gradp_
     (

@@ -183,7 +183,7 @@ void Foam::linearReconstruction::updateCells
                 // w (x) (U_other - U_c), w = Minv_c (X_other - X_c)/|..|^2
                 const label other =
                     own[facei] == c ? nei[facei] : own[facei];
-                w = weight(c, C[other] - C[c]);
+                w = weight(c, facei, C[other] - C[c]);
                 pOther = &pi[other];
                 POther = &Pi[other];
             }
