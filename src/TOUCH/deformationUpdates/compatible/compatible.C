@@ -120,6 +120,19 @@ inline Foam::vector Foam::deformationUpdates::compatible::upwindForce
            *(cT*mSqr*cellJump + ((cN - cT)*(m & cellJump))*m);
     }
 
+    return riemannUpwindForce(cellJump, reconstructedJump, FSum, Sf, magSf);
+}
+
+
+Foam::vector Foam::deformationUpdates::compatible::riemannUpwindForce
+(
+    const vector& cellJump,
+    const vector& reconstructedJump,
+    const tensor& FSum,
+    const vector& Sf,
+    const scalar magSf
+) const
+{
     const vector dp(upwindShare(reconstructedJump, cellJump)*cellJump);
 
     return
