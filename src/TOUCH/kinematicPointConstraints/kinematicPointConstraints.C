@@ -57,7 +57,94 @@ static tensor freeProjector(const tensor& M)
     return tensor::I - fixed;
 }
 
+
+//- Whether two declarations are the same to the last bit (OpenFOAM's
+//  operator== on a VectorSpace allows a difference of VSMALL)
+template<class Type>
+static bool sameBits(const Type& a, const Type& b)
+{
+    for (direction d = 0; d < pTraits<Type>::nComponents; ++d)
+    {
+        if (component(a, d) != component(b, d))
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
 } // End namespace Foam
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+void Foam::kinematicPointConstraints::formProjectors()
+{
+    fixedSum_ = Zero;
+    velocitySum_ = Zero;
+
+    const faceList& faces = mesh_.faces();
+
+    forAll(declaredFree_, patchi)
+    {
+        if (!declaredFree_.set(patchi))
+        {
+            continue;
+        }
+
+        const label start = mesh_.boundary()[patchi].start();
+        const tensorField& free = declaredFree_[patchi];
+        const vectorField& velocity = declaredVelocity_[patchi];
+
+        forAll(free, i)
+        {
+            const tensor fixed(tensor::I - free[i]);
+
+            for (const label pointi : faces[start + i])
+            {
+                const label b = boundaryIndex_[pointi];
+                fixedSum_[b] += fixed;
+                prescribeEqOp()(velocitySum_[b], velocity[i]);
+            }
+        }
+    }
+
+    syncTools::syncPointList
+    (
+        mesh_, boundaryPoints_, fixedSum_, plusEqOp<tensor>(), tensor::zero
+    );
+    syncTools::syncPointList
+    (
+        mesh_, boundaryPoints_, velocitySum_, prescribeEqOp(), vector::zero
+    );
+
+    for (label a = 0; a < nActive_; ++a)
+    {
+        activeIndex_[activePoints_[a]] = -1;
+    }
+    nActive_ = 0;
+
+    // A point no face constrains keeps v: Pi = I exactly and b = 0, which
+    // constrain() would only multiply by
+    forAll(boundaryPoints_, b)
+    {
+        const tensor free(freeProjector(fixedSum_[b]));
+
+        if
+        (
+            !sameBits(free, tensor::I)
+         || !sameBits(velocitySum_[b], vector::zero)
+        )
+        {
+            const label pointi = boundaryPoints_[b];
+            activeIndex_[pointi] = nActive_;
+            activePoints_[nActive_] = pointi;
+            free_[nActive_] = free;
+            prescribed_[nActive_] = velocitySum_[b];
+            ++nActive_;
+        }
+    }
+}
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -65,7 +152,13 @@ static tensor freeProjector(const tensor& M)
 Foam::kinematicPointConstraints::kinematicPointConstraints(const fvMesh& mesh)
 :
     mesh_(mesh),
-    boundaryIndex_(mesh.nPoints(), -1)
+    boundaryIndex_(mesh.nPoints(), -1),
+    declaredFree_(mesh.boundary().size()),
+    declaredVelocity_(mesh.boundary().size()),
+    declaredNow_(mesh.boundary().size(), false),
+    changed_(false),
+    nActive_(0),
+    activeIndex_(mesh.nPoints(), -1)
 {
     // A point of this rank on another rank's boundary face is constrained
     // too: mark the boundary points, then combine the marks
@@ -94,8 +187,11 @@ Foam::kinematicPointConstraints::kinematicPointConstraints(const fvMesh& mesh)
         boundaryIndex_[boundaryPoints_[b]] = b;
     }
 
-    free_.setSize(boundaryPoints_.size(), tensor::I);
-    prescribed_.setSize(boundaryPoints_.size(), Zero);
+    fixedSum_.setSize(boundaryPoints_.size());
+    velocitySum_.setSize(boundaryPoints_.size());
+    activePoints_.setSize(boundaryPoints_.size());
+    free_.setSize(boundaryPoints_.size());
+    prescribed_.setSize(boundaryPoints_.size());
 }
 
 
@@ -103,8 +199,7 @@ Foam::kinematicPointConstraints::kinematicPointConstraints(const fvMesh& mesh)
 
 void Foam::kinematicPointConstraints::reset()
 {
-    free_ = Zero;
-    prescribed_ = Zero;
+    declaredNow_ = false;
 }
 
 
@@ -115,17 +210,31 @@ void Foam::kinematicPointConstraints::add
     const vectorField& velocity
 )
 {
-    const faceList& faces = mesh_.faces();
+    const label patchi = patch.index();
+    declaredNow_[patchi] = true;
+
+    if (!declaredFree_.set(patchi))
+    {
+        declaredFree_.set(patchi, new tensorField(free));
+        declaredVelocity_.set(patchi, new vectorField(velocity));
+        changed_ = true;
+        return;
+    }
+
+    tensorField& lastFree = declaredFree_[patchi];
+    vectorField& lastVelocity = declaredVelocity_[patchi];
 
     forAll(free, i)
     {
-        const tensor fixed(tensor::I - free[i]);
-
-        for (const label pointi : faces[patch.start() + i])
+        if
+        (
+            !sameBits(free[i], lastFree[i])
+         || !sameBits(velocity[i], lastVelocity[i])
+        )
         {
-            const label b = boundaryIndex_[pointi];
-            free_[b] += fixed;
-            prescribeEqOp()(prescribed_[b], velocity[i]);
+            lastFree[i] = free[i];
+            lastVelocity[i] = velocity[i];
+            changed_ = true;
         }
     }
 }
@@ -133,28 +242,37 @@ void Foam::kinematicPointConstraints::add
 
 void Foam::kinematicPointConstraints::finalise()
 {
-    syncTools::syncPointList
-    (
-        mesh_, boundaryPoints_, free_, plusEqOp<tensor>(), tensor::zero
-    );
-    syncTools::syncPointList
-    (
-        mesh_, boundaryPoints_, prescribed_, prescribeEqOp(), vector::zero
-    );
-
-    forAll(free_, b)
+    forAll(declaredFree_, patchi)
     {
-        free_[b] = freeProjector(free_[b]);
+        if (declaredFree_.set(patchi) && !declaredNow_[patchi])
+        {
+            declaredFree_.set(patchi, nullptr);
+            declaredVelocity_.set(patchi, nullptr);
+            changed_ = true;
+        }
+    }
+
+    // The sums are completed across processors: every rank forms them
+    // again if any rank's declarations changed
+    if (Pstream::parRun())
+    {
+        reduce(changed_, orOp<bool>());
+    }
+
+    if (changed_)
+    {
+        formProjectors();
+        changed_ = false;
     }
 }
 
 
 void Foam::kinematicPointConstraints::constrain(vectorField& pointV) const
 {
-    forAll(boundaryPoints_, b)
+    for (label a = 0; a < nActive_; ++a)
     {
-        vector& v = pointV[boundaryPoints_[b]];
-        v = (free_[b] & v) + prescribed_[b];
+        vector& v = pointV[activePoints_[a]];
+        v = (free_[a] & v) + prescribed_[a];
     }
 }
 
@@ -164,10 +282,10 @@ void Foam::kinematicPointConstraints::constrainTranspose
     vectorField& pointForce
 ) const
 {
-    forAll(boundaryPoints_, b)
+    for (label a = 0; a < nActive_; ++a)
     {
-        vector& f = pointForce[boundaryPoints_[b]];
-        f = free_[b].T() & f;
+        vector& f = pointForce[activePoints_[a]];
+        f = free_[a].T() & f;
     }
 }
 

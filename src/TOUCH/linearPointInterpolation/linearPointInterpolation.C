@@ -240,7 +240,7 @@ void Foam::linearPointInterpolation::addTranspose
                 continue;
             }
 
-            const label patchi = patches.whichPatch(facei);
+            const label patchi = patches.patchID()[facei - nInternal];
             if (mesh_.boundary()[patchi].coupled())
             {
                 const label i = facei - mesh_.boundary()[patchi].start();

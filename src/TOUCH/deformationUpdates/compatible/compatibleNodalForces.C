@@ -23,8 +23,11 @@ void Foam::deformationUpdates::compatible::addBoundaryCellForce
     const tensor& dPf
 )
 {
+    // The boundary's face-to-patch table, not whichPatch's search at each
+    // face of each stage
     const fvMesh& mesh = faces_.mesh();
-    const label patchi = mesh.boundaryMesh().whichPatch(facei);
+    const label patchi =
+        mesh.boundaryMesh().patchID()[facei - mesh.nInternalFaces()];
     const fvPatch& patch = mesh.boundary()[patchi];
     if (patch.size() == 0)
     {
