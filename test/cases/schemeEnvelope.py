@@ -8,8 +8,13 @@ The twisting column (tutorials/twistingColumn, nu 0.45 unless stated,
 default FUpdate compatible, with the scheme of issue 9's envelope pinned:
 limitedLinear, RK2, CFL 0.3 unless stated; the tutorial itself now runs
 linear RK3), from the solidMonitor (every step):
-  - 4 x 24 x 4 at CFL 0.6 and 0.7 to t = 0.3 s: the total energy never
-    grows (largest change per step <= 1e-10 E0);
+  - 4 x 24 x 4 at CFL 0.6 (RK2's stated limit) and 0.65 to t = 0.3 s:
+    the total energy never grows (largest change per step <= 1e-10 E0).
+    The margin was 0.7 until the step came from the cells' current
+    heights instead of their smallest stretch (2026-12-02): in the
+    sheared column that measure's 0.7 is about the former's 0.8, where
+    RK2 gained energy before too (validation/stabilityMap/FINDINGS.md,
+    section 10);
   - coarse 2 x 12 x 2 and 3 x 18 x 3 at CFL 0.3 to 0.3 s: likewise;
   - nu 0.499 and 0.4999 on 4 x 24 x 4 at CFL 0.6 to t = 0.1 s: likewise,
     and the twist at t = 0.1 s within 10 % of nu 0.45's;
@@ -80,7 +85,7 @@ def body():
             failures.append("%s: the energy grew by %.2e E0 in a step"
                             % (label, gain))
 
-    for cfl in (0.6, 0.7):
+    for cfl in (0.6, 0.65):
         gain, _ = column(root, "n4_CFL%g" % cfl, cfl=cfl)
         energy("4x24x4 CFL %g" % cfl, gain)
     for n in (2, 3):

@@ -7,6 +7,7 @@ License
 
 #include "stableTimeStep.H"
 #include "mathematicalConstants.H"
+#include "compactAddressing.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -115,27 +116,48 @@ Foam::stableTimeStep::stableTimeStep
     CFL_(readCFL(controls)),
     hCell_(calcCellLengths(faces)),
     hMin_(gMin(hCell_)),
-    Up_(law.Up())
-{}
+    Up_(law.Up()),
+    faces_(faces),
+    heightPatch_(faces.mesh().boundary().size())
+{
+    forAll(faces.mesh().boundary(), patchi)
+    {
+        heightPatch_[patchi] = faces.mesh().boundary()[patchi].size() > 0;
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::stableTimeStep::deltaT(const volTensorField& F) const
 {
-    // The fastest wave, Up, crosses each cell's length in the current
-    // configuration, which shrinks by the cell's smallest principal stretch
+    const fvMesh& mesh = faces_.mesh();
+    const linearReconstruction& reconstruction = faces_.reconstruction();
+    const compactAddressing::rows& cellFaces =
+        compactAddressing::New(mesh).cellFaces();
+    const labelUList& own = mesh.owner();
+    const labelUList& nei = mesh.neighbour();
+    const label nInternal = mesh.nInternalFaces();
+    const labelList& patchID = mesh.boundaryMesh().patchID();
+    const vectorField& Sf = mesh.faceAreas();
+    const vectorField& Cf = mesh.faceCentres();
+    const vectorField& X = reconstruction.X();
+
+    // The smallest current height of any cell: with s = d & S_f for the
+    // centres' offset d across face f, h_f = |s|/|S_f| and |F^-T N_f| =
+    // |H S_f|/(J |S_f|), so height^2 = min(J, 1)^2 s^2/|H S_f|^2 (no root
+    // and no division a face)
     scalar crossing = GREAT;
     scalar crossingSqr = sqr(crossing);
 
     forAll(F, celli)
     {
-        const symmTensor C(symm(F[celli].T() & F[celli]));
+        const tensor& Fc = F[celli];
+        const scalar J = det(Fc);
+        const symmTensor C(symm(Fc.T() & Fc));
 
-        // Gershgorin's lower bound of the smallest eigenvalue: a cell that
-        // it already puts above the shortest crossing so far cannot
-        // shorten it, so most cells are passed without the eigenvalue's
-        // acos and cos (the step is the same to the last bit)
+        // Gershgorin's lower bound of lambda_min^2: a cell that it puts
+        // above the smallest height so far cannot lower it
         const scalar lowest =
             min
             (
@@ -146,16 +168,67 @@ Foam::scalar Foam::stableTimeStep::deltaT(const volTensorField& F) const
                     C.zz() - mag(C.xz()) - mag(C.yz())
                 )
             );
-        if (lowest > 0 && sqr(hCell_[celli])*lowest >= crossingSqr)
+        if
+        (
+            J > 0
+         && lowest > 0
+         && sqr(hCell_[celli])*lowest >= crossingSqr*sqr(max(J, scalar(1)))
+        )
         {
             continue;
         }
 
-        const scalar minStretch =
-            Foam::sqrt(max(minEigenValue(C), scalar(0)));
+        if (!(J > 0))
+        {
+            // Inverted or degenerate (caught as invalid by the stage): the
+            // stretch alone
+            const scalar minStretch =
+                Foam::sqrt(max(minEigenValue(C), scalar(0)));
+            crossing = min(crossing, hCell_[celli]*minStretch);
+            crossingSqr = sqr(crossing);
+            continue;
+        }
 
-        crossing = min(crossing, hCell_[celli]*minStretch);
-        crossingSqr = sqr(crossing);
+        const tensor H(cof(Fc));
+        const scalar credit = sqr(min(J, scalar(1)));
+
+        for (const label facei : cellFaces[celli])
+        {
+            scalar s;
+            if (facei < nInternal)
+            {
+                const label other =
+                    own[facei] == celli ? nei[facei] : own[facei];
+                s = (X[other] - X[celli]) & Sf[facei];
+            }
+            else
+            {
+                const label patchi = patchID[facei - nInternal];
+                if (!heightPatch_[patchi])
+                {
+                    continue;
+                }
+                const fvPatch& patch = mesh.boundary()[patchi];
+                if (patch.coupled())
+                {
+                    const vector& other =
+                        reconstruction.neighbourCentres(patchi)
+                        [facei - patch.start()];
+                    s = (other - X[celli]) & Sf[facei];
+                }
+                else
+                {
+                    s = 2*((Cf[facei] - X[celli]) & Sf[facei]);
+                }
+            }
+
+            const scalar HSSqr = magSqr(H & Sf[facei]);
+            if (credit*sqr(s) < crossingSqr*HSSqr)
+            {
+                crossingSqr = credit*sqr(s)/HSSqr;
+                crossing = Foam::sqrt(crossingSqr);
+            }
+        }
     }
 
     return CFL_*returnReduce(crossing, minOp<scalar>())/Up_;

@@ -656,10 +656,11 @@ Foam::scalar Foam::deformationUpdates::compatible::stableCFL
 ) const
 {
     // Twisting column, 4 x 24 x 4 and 8 x 48 x 8, nu 0.45, with the
-    // quadratic jump share: the energy never grows up to these (RK2 0.65
-    // holds too; at 0.7 8 x 48 x 8 gains 2.6e-4 E0 in a step, where the
-    // linear share held to 0.7); RK3 holds to 1.0 (2 x 12 x 2: RK2 0.3,
-    // RK3 0.8; validation/stabilityMap)
+    // quadratic jump share and the step of the cells' current heights:
+    // the energy never grows up to these (at RK2 0.7 4 x 24 x 4 gains
+    // 0.24 E0 in a step); RK3 holds to 1.0 also at nu 0.499, on
+    // polyhedra and on tetrahedra (2 x 12 x 2: RK2 0.3, RK3 0.8;
+    // validation/stabilityMap/FINDINGS.md 9, 10)
     return timeScheme == "RK3" ? 1.0 : 0.6;
 }
 
