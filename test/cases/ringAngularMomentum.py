@@ -67,10 +67,7 @@ def body():
                 failures.append("-n %d: max |L_%s| = %.2e |p_y(0)| R_outer "
                                 "(limit %.0e)" % (n, "xyz"[i], Lrel[i],
                                                    LIMIT))
-    summary = "; ".join(lines)
-    if failures:
-        raise AssertionError("; ".join(failures) + " | " + summary)
-    return summary
+    return testing.verdict(lines, failures)
 
 
 if __name__ == "__main__":

@@ -113,10 +113,8 @@ def body():
         if change > TWIST_TOL:
             failures.append("twist %s %.1f deg differs from %.1f by %.1f %%"
                             % (label, twist, reference, 100 * change))
-    summary = "; ".join(lines) + "; twist hex %.1f deg" % reference
-    if failures:
-        raise AssertionError("; ".join(failures) + " | " + summary)
-    return summary
+    lines.append("twist hex %.1f deg" % reference)
+    return testing.verdict(lines, failures)
 
 
 if __name__ == "__main__":

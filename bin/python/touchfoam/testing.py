@@ -54,6 +54,15 @@ def run_test(name, body, needs_solver=True):
     return 0
 
 
+def verdict(lines, failures):
+    """The one-line summary of a test's measurements ('; '-joined lines);
+    raises AssertionError naming the failures first when there are any."""
+    summary = "; ".join(lines)
+    if failures:
+        raise AssertionError("; ".join(failures) + " | " + summary)
+    return summary
+
+
 def relative_max_difference(a, b, floor=1e-300):
     """max|a - b| / max|b|, with the denominator at least floor."""
     a, b = np.asarray(a, float), np.asarray(b, float)
