@@ -10,9 +10,9 @@ Application
 Description
     Checks the von Mises hyperelastic-plastic law and its return mapping on
     the cells of a mesh, driving the state hooks as touchSolid does:
-    - the Jacobi eigen-decomposition (random, repeated and nearly repeated
-      eigenvalues, be = I), with OpenFOAM's eigenValues printed for
-      comparison,
+    - the eigen-decomposition (symmetricEigen: random, repeated and nearly
+      repeated eigenvalues, be = I), with OpenFOAM's eigenValues printed
+      for comparison,
     - the pointwise (virgin) law: P(I) = 0, P = dpsi/dF, and P equal to the
       Hencky stress computed with an independent matrix logarithm,
     - (a) below yield the stress is the Hencky stress with the state, which
@@ -77,7 +77,7 @@ int main(int argc, char *argv[])
 
 
     // Eigen-decomposition
-    Info<< nl << "Jacobi eigen-decomposition" << nl;
+    Info<< nl << "Eigen-decomposition (symmetricEigen)" << nl;
     {
         vector values;
         tensor n;

@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "vonMisesPlastic.H"
+#include "symmetricEigen.H"
 #include "zeroGradientFvPatchFields.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -30,102 +31,7 @@ void Foam::mechanicalLaws::vonMisesPlastic::eigen
     tensor& vectors
 )
 {
-    // Cyclic Jacobi (Numerical Recipes, 3rd ed., 11.1).  OpenFOAM v1912's
-    // eigenValues solves the characteristic cubic, which loses half the
-    // digits of nearly repeated eigenvalues (be near I: every elastic cell)
-    // and whose eigenVectors uses absolute thresholds (SMALL); Jacobi
-    // rotations keep every eigenvalue accurate to rounding of |A| and the
-    // eigenvectors orthonormal, and A = I needs no rotation at all.
-    scalar a[3][3] =
-    {
-        {A.xx(), A.xy(), A.xz()},
-        {A.xy(), A.yy(), A.yz()},
-        {A.xz(), A.yz(), A.zz()}
-    };
-    scalar v[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-
-    static const label pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
-
-    for (label sweep = 0; sweep < 50; ++sweep)
-    {
-        if (a[0][1] == 0 && a[0][2] == 0 && a[1][2] == 0)
-        {
-            break;
-        }
-
-        for (const auto& pq : pairs)
-        {
-            const label p = pq[0];
-            const label q = pq[1];
-            const scalar apq = a[p][q];
-
-            if (apq == 0)
-            {
-                continue;
-            }
-
-            // After a few sweeps an element below rounding of both its
-            // diagonal entries is zero
-            const scalar g = 100*mag(apq);
-            if
-            (
-                sweep > 3
-             && mag(a[p][p]) + g == mag(a[p][p])
-             && mag(a[q][q]) + g == mag(a[q][q])
-            )
-            {
-                a[p][q] = a[q][p] = 0;
-                continue;
-            }
-
-            // The rotation in the (p, q) plane that zeroes a[p][q]
-            const scalar h = a[q][q] - a[p][p];
-            scalar t;
-            if (mag(h) + g == mag(h))
-            {
-                t = apq/h;
-            }
-            else
-            {
-                const scalar theta = 0.5*h/apq;
-                t = 1/(mag(theta) + Foam::sqrt(1 + sqr(theta)));
-                if (theta < 0)
-                {
-                    t = -t;
-                }
-            }
-            const scalar c = 1/Foam::sqrt(1 + sqr(t));
-            const scalar s = t*c;
-
-            a[p][p] -= t*apq;
-            a[q][q] += t*apq;
-            a[p][q] = a[q][p] = 0;
-
-            const label r = 3 - p - q;
-            const scalar arp = a[r][p];
-            const scalar arq = a[r][q];
-            a[r][p] = a[p][r] = c*arp - s*arq;
-            a[r][q] = a[q][r] = s*arp + c*arq;
-
-            for (label k = 0; k < 3; ++k)
-            {
-                const scalar vkp = v[k][p];
-                const scalar vkq = v[k][q];
-                v[k][p] = c*vkp - s*vkq;
-                v[k][q] = s*vkp + c*vkq;
-            }
-        }
-    }
-
-    values = vector(a[0][0], a[1][1], a[2][2]);
-
-    // The columns of v are the eigenvectors: the rows of vectors
-    vectors = tensor
-    (
-        v[0][0], v[1][0], v[2][0],
-        v[0][1], v[1][1], v[2][1],
-        v[0][2], v[1][2], v[2][2]
-    );
+    symmetricEigen(A, values, vectors);
 }
 
 
