@@ -50,6 +50,10 @@ void Foam::solidFaces::fillInteriorState(const label patchi)
     vectorField& tM = tM_[patchi];
     vectorField& nM = nM_[patchi];
     vectorField& xM = xM_[patchi];
+    vectorField& xPointsM = xPointsM_[patchi];
+    const faceList& faces = mesh_.faces();
+    const pointField& X = mesh_.points();
+    const vectorField& pointU = pointU_.primitiveField();
     const bool stored = reconstruction_.storesStressGradients();
 
     forAll(faceCells, i)
@@ -65,6 +69,19 @@ void Foam::solidFaces::fillInteriorState(const label patchi)
         }
         nM[i] = spatialNormal(owner.F, N[i]);
         xM[i] = owner.X + u_[o] + (owner.F & r);
+
+        // The mean of the face's points where they are now: the surface
+        // that is drawn and measured.  A contact decided by X + u + F r
+        // instead let a wall face touch while its points, which drift from
+        // the cells' motion (the point upwinding), hovered up to 80 um
+        // above the wall, and held them there (Taylor bar)
+        const face& f = faces[patch.start() + i];
+        vector sum(Zero);
+        for (const label pointi : f)
+        {
+            sum += X[pointi] + pointU[pointi];
+        }
+        xPointsM[i] = sum/f.size();
     }
 }
 
@@ -78,7 +95,8 @@ Foam::solidFaces::solidFaces
     volVectorField& lm,
     const volTensorField& F,
     const volTensorField& P,
-    const volVectorField& u
+    const volVectorField& u,
+    const pointVectorField& pointU
 )
 :
     mesh_(mesh),
@@ -86,7 +104,8 @@ Foam::solidFaces::solidFaces
     lm_(lm),
     F_(F),
     P_(P),
-    u_(u)
+    u_(u),
+    pointU_(pointU)
 {
     auto coupled = [](const fvPatch& patch) { return patch.coupled(); };
     auto solid = [](const fvPatch& patch) { return !patch.coupled(); };
@@ -103,6 +122,7 @@ Foam::solidFaces::solidFaces
     sizeBuffers(mesh, nM_, solid);
     sizeBuffers(mesh, NM_, solid);
     sizeBuffers(mesh, xM_, solid);
+    sizeBuffers(mesh, xPointsM_, solid);
 
     forAll(mesh.boundary(), patchi)
     {

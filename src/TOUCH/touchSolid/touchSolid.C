@@ -227,7 +227,7 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
         dimensionedVector("0", dimVelocity, Zero),
         calculatedPointPatchVectorField::typeName
     ),
-    faces_(mesh, reconstruction_, lm_, F_, P_, u_),
+    faces_(mesh, reconstruction_, lm_, F_, P_, u_, pointU_),
     update_
     (
         deformationUpdate::New(controls_, faces_, *law_, *riemann_, reconstruction_)

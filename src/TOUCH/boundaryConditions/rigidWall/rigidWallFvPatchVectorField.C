@@ -256,7 +256,7 @@ void Foam::rigidWallFvPatchVectorField::updateActiveSet
         }
         else
         {
-            const scalar gap = (s.x[facei] - wallPoint) & normal_;
+            const scalar gap = (s.xPoints[facei] - wallPoint) & normal_;
             contact_[facei] =
                 compressive
              && gap <= touchingTolerance*sqrt(magSf[facei]);
