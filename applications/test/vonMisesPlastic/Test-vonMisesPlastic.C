@@ -81,7 +81,7 @@ int main(int argc, char *argv[])
     {
         vector values;
         tensor n;
-        vonMisesPlastic::eigen(symmTensor::I, values, n);
+        symmetricEigen(symmTensor::I, values, n);
         report.check
         (
             "eigen(I): values 1 and vectors I, bit for bit",
@@ -111,7 +111,7 @@ int main(int argc, char *argv[])
             );
             vector values;
             tensor n;
-            vonMisesPlastic::eigen(A, values, n);
+            symmetricEigen(A, values, n);
 
             const symmTensor rebuilt
             (

@@ -55,6 +55,11 @@ void Foam::solidFaces::fillInteriorState(const label patchi)
     const pointField& X = mesh_.points();
     const vectorField& pointU = pointU_.primitiveField();
     const bool stored = reconstruction_.storesStressGradients();
+    const bool pointPositions =
+        refCast<const solidFluxFvPatchVectorField>
+        (
+            lm_.boundaryField()[patchi]
+        ).usesPointPositions();
 
     forAll(faceCells, i)
     {
@@ -69,6 +74,11 @@ void Foam::solidFaces::fillInteriorState(const label patchi)
         }
         nM[i] = spatialNormal(owner.F, N[i]);
         xM[i] = owner.X + u_[o] + (owner.F & r);
+
+        if (!pointPositions)
+        {
+            continue;
+        }
 
         // The mean of the face's points where they are now: the surface
         // that is drawn and measured.  A contact decided by X + u + F r

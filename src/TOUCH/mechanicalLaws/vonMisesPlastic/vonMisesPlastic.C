@@ -22,19 +22,6 @@ namespace mechanicalLaws
 }
 
 
-// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
-
-void Foam::mechanicalLaws::vonMisesPlastic::eigen
-(
-    const symmTensor& A,
-    vector& values,
-    tensor& vectors
-)
-{
-    symmetricEigen(A, values, vectors);
-}
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 bool Foam::mechanicalLaws::vonMisesPlastic::readYieldStressMeasure() const
@@ -139,7 +126,7 @@ void Foam::mechanicalLaws::vonMisesPlastic::elasticTrial
 {
     // Elastic left Cauchy-Green tensor and its principal stretches
     vector lambdaSqr;
-    eigen(transform(F, CpInv), lambdaSqr, n);
+    symmetricEigen(transform(F, CpInv), lambdaSqr, n);
 
     lnLambda = vector
     (
