@@ -79,14 +79,27 @@ void Foam::linearPointInterpolation::interpolate
 
     forAll(mesh_.boundary(), patchi)
     {
+        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+        const vectorField& w = reconstruction_.coupledWeights(patchi);
+
+        if (reconstruction_.mirror(patchi))
+        {
+            // The reflected cell: U' - U = -2 (N.U) N
+            const vectorField& N = reconstruction_.mirrorNormals(patchi);
+            forAll(faceCells, i)
+            {
+                const vector& Uc = Ui[faceCells[i]];
+                grad[faceCells[i]] -= w[i]*(2*(N[i] & Uc)*N[i]);
+            }
+            continue;
+        }
+
         if (!mesh_.boundary()[patchi].coupled())
         {
             continue;
         }
 
         const vectorField Un(U.boundaryField()[patchi].patchNeighbourField());
-        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
-        const vectorField& w = reconstruction_.coupledWeights(patchi);
 
         forAll(faceCells, i)
         {
@@ -241,7 +254,16 @@ void Foam::linearPointInterpolation::addTranspose
             }
 
             const label patchi = patches.patchID()[facei - nInternal];
-            if (mesh_.boundary()[patchi].coupled())
+            if (reconstruction_.mirror(patchi))
+            {
+                // The gradient gained w (x) (R - I) U_e from the reflected
+                // cell, R = I - 2 N N: its transpose stays in the cell
+                const label i = facei - mesh_.boundary()[patchi].start();
+                const vector& N = reconstruction_.mirrorNormals(patchi)[i];
+                const vector q(H & reconstruction_.coupledWeights(patchi)[i]);
+                cellValues[celli] -= (2*(N & q))*N;
+            }
+            else if (mesh_.boundary()[patchi].coupled())
             {
                 const label i = facei - mesh_.boundary()[patchi].start();
                 const vector q(H & reconstruction_.coupledWeights(patchi)[i]);

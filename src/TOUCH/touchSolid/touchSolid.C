@@ -72,6 +72,22 @@ void Foam::touchSolid::checkInput() const
 }
 
 
+Foam::boolList Foam::touchSolid::mirrorPatches(const volVectorField& lm)
+{
+    boolList mirror(lm.boundaryField().size(), false);
+
+    forAll(lm.boundaryField(), patchi)
+    {
+        const fvPatchVectorField& pf = lm.boundaryField()[patchi];
+        mirror[patchi] =
+            isA<solidFluxFvPatchVectorField>(pf)
+         && refCast<const solidFluxFvPatchVectorField>(pf).mirror();
+    }
+
+    return mirror;
+}
+
+
 Foam::tmp<Foam::vectorField> Foam::touchSolid::cellPositions
 (
     const vectorField& u
@@ -179,7 +195,6 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     controls_(mesh.solutionDict().subDict("TOUCH")),
     law_(mechanicalLaw::New(mesh)),
     riemann_(riemannSolver::New(controls_, *law_)),
-    reconstruction_(mesh, controls_),
     angularMomentum_(mesh),
     preserveAngularMomentum_
     (
@@ -227,6 +242,7 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
         dimensionedVector("0", dimVelocity, Zero),
         calculatedPointPatchVectorField::typeName
     ),
+    reconstruction_(mesh, controls_, mirrorPatches(lm_)),
     faces_(mesh, reconstruction_, lm_, F_, P_, u_, pointU_),
     update_
     (

@@ -504,6 +504,7 @@ bool Foam::deformationUpdates::compatible::readQuadraticShare
 Foam::scalarField Foam::deformationUpdates::compatible::calcPointMobility
 (
     const fvMesh& mesh,
+    const linearReconstruction& reconstruction,
     const scalar coefficient,
     const scalar impedance
 )
@@ -514,7 +515,9 @@ Foam::scalarField Foam::deformationUpdates::compatible::calcPointMobility
     }
 
     // The area of a point, a third of the sum of its faces' shares (a
-    // processor face counts half on each side): a plane wave's traction
+    // processor face counts half on each side, and so does a mirror's,
+    // whose other side is the reflection: the whole body's point has
+    // twice the area and twice the nodal force): a plane wave's traction
     // jump [[t]] on a hexahedral mesh gives f_a = [[t]] S_a, so that
     // w = f/(2 rho Up S_a) is the Riemann contact velocity [[t]]/(2 rho Up)
     scalarField area(mesh.nPoints(), Zero);
@@ -527,7 +530,11 @@ Foam::scalarField Foam::deformationUpdates::compatible::calcPointMobility
         if (!mesh.isInternalFace(facei))
         {
             const label patchi = mesh.boundaryMesh().whichPatch(facei);
-            if (mesh.boundary()[patchi].coupled())
+            if
+            (
+                mesh.boundary()[patchi].coupled()
+             || reconstruction.mirror(patchi)
+            )
             {
                 share *= 0.5;
             }
@@ -580,7 +587,10 @@ Foam::deformationUpdates::compatible::compatible
     pointUpwinding_(controls.getOrDefault<scalar>("pointUpwinding", 1)),
     pointMobility_
     (
-        calcPointMobility(faces.mesh(), pointUpwinding_, law.rho()*law.Up())
+        calcPointMobility
+        (
+            faces.mesh(), reconstruction, pointUpwinding_, law.rho()*law.Up()
+        )
     ),
     reconstructedForce_(pointUpwinding_ > 0 ? faces.mesh().nPoints() : 0),
     faceIncrementForce_(pointUpwinding_ > 0 ? faces.mesh().nFaces() : 0),

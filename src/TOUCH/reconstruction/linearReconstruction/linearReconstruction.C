@@ -47,7 +47,7 @@ void Foam::linearReconstruction::calcWeights()
     {
         const fvPatch& patch = mesh_.boundary()[patchi];
 
-        if (patch.coupled())
+        if (patch.coupled() || mirror_[patchi])
         {
             const vectorField& Xn = neighbourCentres_[patchi];
             const labelUList& faceCells = patch.faceCells();
@@ -67,7 +67,7 @@ void Foam::linearReconstruction::calcWeights()
     {
         const fvPatch& patch = mesh_.boundary()[patchi];
 
-        if (patch.coupled())
+        if (patch.coupled() || mirror_[patchi])
         {
             continue;
         }
@@ -102,7 +102,7 @@ void Foam::linearReconstruction::calcWeights()
     {
         const fvPatch& patch = mesh_.boundary()[patchi];
 
-        if (patch.coupled())
+        if (patch.coupled() || mirror_[patchi])
         {
             const vectorField& Xn = neighbourCentres_[patchi];
             const labelUList& faceCells = patch.faceCells();
@@ -119,12 +119,43 @@ void Foam::linearReconstruction::calcWeights()
 }
 
 
+void Foam::linearReconstruction::reflectMirrorValues
+(
+    const vectorField& p,
+    const tensorField& P
+)
+{
+    forAll(mirrorNormals_, patchi)
+    {
+        if (!mirror_[patchi])
+        {
+            continue;
+        }
+
+        const vectorField& N = mirrorNormals_[patchi];
+        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+        vectorField& pR = pNeighbour_[patchi];
+        tensorField& PR = PNeighbour_[patchi];
+
+        forAll(N, i)
+        {
+            const tensor R(tensor::I - 2*sqr(N[i]));
+            const label c = faceCells[i];
+
+            pR[i] = R & p[c];
+            PR[i] = R & P[c] & R;
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::linearReconstruction::linearReconstruction
 (
     const fvMesh& mesh,
-    const dictionary& dict
+    const dictionary& dict,
+    const boolList& mirror
 )
 :
     mesh_(mesh),
@@ -143,6 +174,8 @@ Foam::linearReconstruction::linearReconstruction
     Minv_(mesh.nCells()),
     inverseDistanceSqr_(mesh.nInternalFaces()),
     coupledWeights_(mesh.boundary().size()),
+    mirror_(mirror.empty() ? boolList(mesh.boundary().size(), false) : mirror),
+    mirrorNormals_(mesh.boundary().size()),
     gradp_
     (
         IOobject
@@ -176,11 +209,19 @@ Foam::linearReconstruction::linearReconstruction
             patch.start() - mesh.nInternalFaces()
         ) = patchi;
 
-        if (patch.coupled())
+        if (patch.coupled() || mirror_[patchi])
         {
             pNeighbour_.set(patchi, new vectorField(patch.size()));
             PNeighbour_.set(patchi, new tensorField(patch.size()));
         }
+
+        mirrorNormals_.set
+        (
+            patchi,
+            mirror_[patchi]
+          ? new vectorField(patch.nf())
+          : new vectorField()
+        );
     }
 
     Info<< "Reconstruction " << schemeNames[scheme_];
@@ -215,10 +256,12 @@ Foam::linearReconstruction::linearReconstruction
         }
         X.correctBoundaryConditions();
 
-        // Both empty but on the coupled patches
+        // Both empty but on the coupled and the mirror patches; a mirror
+        // face's neighbour is the cell's reflection in the face's plane
         forAll(mesh.boundary(), patchi)
         {
-            const bool coupled = mesh.boundary()[patchi].coupled();
+            const fvPatch& patch = mesh.boundary()[patchi];
+            const bool coupled = patch.coupled();
 
             neighbourCentres_.set
             (
@@ -230,12 +273,21 @@ Foam::linearReconstruction::linearReconstruction
                   : tmp<vectorField>(new vectorField())
                 )
             );
+
+            if (mirror_[patchi])
+            {
+                const vectorField Xc(patch.patchInternalField(X()));
+                const vectorField& N = mirrorNormals_[patchi];
+                neighbourCentres_[patchi] =
+                    Xc + 2*((patch.Cf() - Xc) & N)*N;
+            }
+
             coupledWeights_.set
             (
                 patchi,
                 new vectorField
                 (
-                    coupled ? mesh.boundary()[patchi].size() : 0,
+                    coupled || mirror_[patchi] ? patch.size() : 0,
                     Zero
                 )
             );

@@ -119,9 +119,11 @@ void Foam::linearReconstruction::updateCells
     const vectorField& pi = p.primitiveField();
     const tensorField& Pi = P.primitiveField();
 
+    reflectMirrorValues(pi, Pi);
+
     forAll(pNeighbour_, patchi)
     {
-        if (pNeighbour_.set(patchi))
+        if (pNeighbour_.set(patchi) && !mirror_[patchi])
         {
             pNeighbour_[patchi] =
                 p.boundaryField()[patchi].patchNeighbourField();
@@ -234,7 +236,8 @@ void Foam::linearReconstruction::updateCells
         }
 
         // Pass 2: the largest increments up and down towards the limited
-        // faces.  Coupled faces are interior faces.  Faces of a boundary
+        // faces.  Coupled and mirror faces are interior faces (a mirror
+        // face's neighbour is the reflected cell).  Faces of a boundary
         // condition are not limited: there is no neighbour value to bound
         // them, their flux is upwinded against the condition, and clipping
         // them made every boundary cell first order (swinging cube, stress
