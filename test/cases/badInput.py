@@ -20,7 +20,8 @@ On a 4^3 swinging cube, one mistake at a time:
   - model vonMisesPlastic with yieldStress 0, and with hardeningModulus -1,
   - a misspelt nodalAveraging (pressur), and nodalAveraging deformation
     with vonMisesPlastic (a law with state),
-  - a misspelt jumpShare (quadratc).
+  - a misspelt jumpShare (quadratc),
+  - a misspelt symmetricPlanes (mirorr).
 Each run must exit non-zero, its log must contain every expected word, and
 no time folder may be written.  Every mistake is tried; the failure names
 all that were not refused properly.
@@ -103,6 +104,9 @@ MISTAKES = [
     ("jumpShare", "system/fvSolution",
      (r"(CFL\s+[0-9.]+;)", r"\1\n    jumpShare quadratc;"),
      ["quadratc", "fvSolution", "quadratic", "linear"]),
+    ("symmetricPlanes", "system/fvSolution",
+     (r"(CFL\s+[0-9.]+;)", r"\1\n    symmetricPlanes mirorr;"),
+     ["mirorr", "fvSolution", "oneSided", "mirror"]),
 ]
 
 

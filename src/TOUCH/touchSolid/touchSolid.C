@@ -72,9 +72,36 @@ void Foam::touchSolid::checkInput() const
 }
 
 
-Foam::boolList Foam::touchSolid::mirrorPatches(const volVectorField& lm)
+bool Foam::touchSolid::readMirrorPlanes(const dictionary& controls)
+{
+    const word planes
+    (
+        controls.getOrDefault<word>("symmetricPlanes", "oneSided")
+    );
+
+    if (planes != "oneSided" && planes != "mirror")
+    {
+        FatalIOErrorInFunction(controls)
+            << "Unknown symmetricPlanes '" << planes << "' in "
+            << controls.name() << ": valid choices are oneSided (the"
+            << " default) and mirror" << nl << exit(FatalIOError);
+    }
+
+    return planes == "mirror";
+}
+
+
+Foam::boolList Foam::touchSolid::mirrorPatches
+(
+    const volVectorField& lm,
+    const bool mirrorPlanes
+)
 {
     boolList mirror(lm.boundaryField().size(), false);
+    if (!mirrorPlanes)
+    {
+        return mirror;
+    }
 
     forAll(lm.boundaryField(), patchi)
     {
@@ -242,7 +269,8 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
         dimensionedVector("0", dimVelocity, Zero),
         calculatedPointPatchVectorField::typeName
     ),
-    reconstruction_(mesh, controls_, mirrorPatches(lm_)),
+    mirrorPlanes_(readMirrorPlanes(controls_)),
+    reconstruction_(mesh, controls_, mirrorPatches(lm_, mirrorPlanes_)),
     faces_(mesh, reconstruction_, lm_, F_, P_, u_, pointU_),
     update_
     (
@@ -542,7 +570,9 @@ void Foam::touchSolid::writeSummary(Ostream& os) const
         << update_->type() << ", angular momentum preservation "
         << (preserveAngularMomentum_ ? "on" : "off")
         << ", nodal averaging "
-        << (nodalAveraging_ ? nodalAveraging_->type() : word("off")) << nl;
+        << (nodalAveraging_ ? nodalAveraging_->type() : word("off"))
+        << ", symmetric planes " << (mirrorPlanes_ ? "mirror" : "oneSided")
+        << nl;
 }
 
 
