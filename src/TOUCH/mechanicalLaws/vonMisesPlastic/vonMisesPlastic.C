@@ -7,6 +7,7 @@ License
 
 #include "vonMisesPlastic.H"
 #include "symmetricEigen.H"
+#include <cstring>
 #include "zeroGradientFvPatchFields.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -52,6 +53,40 @@ Foam::scalar Foam::mechanicalLaws::vonMisesPlastic::elasticEnergy
 {
     // tau' = 2 mu dev(ln V_e): mu |dev ln V_e|^2 = |tau'|^2/(4 mu)
     return magSqr(dev(tau))/(4*mu_) + 0.5*kappa_*sqr(Foam::log(J));
+}
+
+
+void Foam::mechanicalLaws::vonMisesPlastic::returnMapPresent
+(
+    const tensorField& F
+) const
+{
+    // Bit for bit (Tensor's == allows VSMALL): the reuse must give exactly
+    // what evaluating again would
+    if
+    (
+        presentValid_
+     && F.size() == presentF_.size()
+     && std::memcmp(F.cdata(), presentF_.cdata(), F.byteSize()) == 0
+    )
+    {
+        return;
+    }
+
+    const symmTensorField& CpInv = CpInv_.primitiveField();
+    const scalarField& epsilonP = epsilonP_.primitiveField();
+    presentF_ = F;
+
+    forAll(F, celli)
+    {
+        returnMapping
+        (
+            F[celli], CpInv[celli], epsilonP[celli],
+            presentTau_[celli], CpInvTrial_[celli], epsilonPTrial_[celli]
+        );
+    }
+
+    presentValid_ = true;
 }
 
 
@@ -101,7 +136,10 @@ Foam::mechanicalLaws::vonMisesPlastic::vonMisesPlastic
     epsilonPBase_(epsilonP_.primitiveField()),
     CpInvTrial_(CpInv_.primitiveField()),
     epsilonPTrial_(epsilonP_.primitiveField()),
-    firstStage_(true)
+    firstStage_(true),
+    presentTau_(mesh.nCells()),
+    presentF_(mesh.nCells()),
+    presentValid_(false)
 {
     CpInv_.correctBoundaryConditions();
     epsilonP_.correctBoundaryConditions();
@@ -261,31 +299,36 @@ void Foam::mechanicalLaws::vonMisesPlastic::correct
 {
     // The first stage of a step return-maps the present state to F^n; the
     // later stages return-map that state (the base) to their own F
-    const bool first = firstStage_;
-    const symmTensorField& CpInv =
-        first ? CpInv_.primitiveField() : CpInvBase_;
-    const scalarField& epsilonP =
-        first ? epsilonP_.primitiveField() : epsilonPBase_;
-
     const tensorField& Fi = F.primitiveField();
     tensorField& Pi = P.primitiveFieldRef();
-    symmTensor tau;
 
-    forAll(Fi, celli)
+    if (firstStage_)
     {
-        returnMapping
-        (
-            Fi[celli], CpInv[celli], epsilonP[celli],
-            tau, CpInvTrial_[celli], epsilonPTrial_[celli]
-        );
-        Pi[celli] = tau & inv(Fi[celli]).T();
-    }
+        returnMapPresent(Fi);
 
-    if (first)
-    {
+        forAll(Fi, celli)
+        {
+            Pi[celli] = presentTau_[celli] & inv(Fi[celli]).T();
+        }
+
         CpInvBase_ = CpInvTrial_;
         epsilonPBase_ = epsilonPTrial_;
         firstStage_ = false;
+    }
+    else
+    {
+        presentValid_ = false;
+        symmTensor tau;
+
+        forAll(Fi, celli)
+        {
+            returnMapping
+            (
+                Fi[celli], CpInvBase_[celli], epsilonPBase_[celli],
+                tau, CpInvTrial_[celli], epsilonPTrial_[celli]
+            );
+            Pi[celli] = tau & inv(Fi[celli]).T();
+        }
     }
 
     P.correctBoundaryConditions();
@@ -298,19 +341,14 @@ Foam::scalar Foam::mechanicalLaws::vonMisesPlastic::totalStrainEnergy
 ) const
 {
     const scalarField& V = mesh_.V();
-    const symmTensorField& CpInv = CpInv_.primitiveField();
-    const scalarField& epsilonP = epsilonP_.primitiveField();
-    symmTensor tau, CpInvNew;
-    scalar epsilonPNew;
+    const tensorField& Fi = F.primitiveField();
     scalar energy = 0;
+
+    returnMapPresent(Fi);
 
     forAll(V, celli)
     {
-        returnMapping
-        (
-            F[celli], CpInv[celli], epsilonP[celli], tau, CpInvNew, epsilonPNew
-        );
-        energy += V[celli]*elasticEnergy(tau, det(F[celli]));
+        energy += V[celli]*elasticEnergy(presentTau_[celli], det(Fi[celli]));
     }
 
     return returnReduce(energy, sumOp<scalar>());
@@ -331,6 +369,7 @@ void Foam::mechanicalLaws::vonMisesPlastic::advanceStage(const scalar)
     // s~: see the class description
     CpInv_.primitiveFieldRef() = CpInvTrial_;
     epsilonP_.primitiveFieldRef() = epsilonPTrial_;
+    presentValid_ = false;
     CpInv_.correctBoundaryConditions();
     epsilonP_.correctBoundaryConditions();
 }
@@ -355,6 +394,7 @@ void Foam::mechanicalLaws::vonMisesPlastic::commitStep
         );
     }
 
+    presentValid_ = false;
     CpInv_.correctBoundaryConditions();
     epsilonP_.correctBoundaryConditions();
     firstStage_ = true;
@@ -365,6 +405,7 @@ void Foam::mechanicalLaws::vonMisesPlastic::restoreOldTime()
 {
     CpInv_.primitiveFieldRef() = CpInv0_;
     epsilonP_.primitiveFieldRef() = epsilonP0_;
+    presentValid_ = false;
     CpInv_.correctBoundaryConditions();
     epsilonP_.correctBoundaryConditions();
     firstStage_ = true;
