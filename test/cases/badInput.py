@@ -105,7 +105,7 @@ MISTAKES = [
      (r"(CFL\s+[0-9.]+;)", r"\1\n    jumpShare quadratc;"),
      ["quadratc", "fvSolution", "quadratic", "linear"]),
     ("symmetricPlanes", "system/fvSolution",
-     (r"(CFL\s+[0-9.]+;)", r"\1\n    symmetricPlanes mirorr;"),
+     (r"symmetricPlanes\s+\w+;", "symmetricPlanes mirorr;"),
      ["mirorr", "fvSolution", "oneSided", "mirror"]),
 ]
 

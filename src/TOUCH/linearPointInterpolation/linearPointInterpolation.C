@@ -84,12 +84,16 @@ void Foam::linearPointInterpolation::interpolate
 
         if (reconstruction_.mirror(patchi))
         {
-            // The reflected cell: U' - U = -2 (N.U) N
+            // The reflected cell: U' - U = -2 (N.U) N (symmetric plane) or
+            // -2 (U - (N.U) N) (skew-symmetric: U' = -R U)
             const vectorField& N = reconstruction_.mirrorNormals(patchi);
+            const bool skew = reconstruction_.mirrorSign(patchi) < 0;
             forAll(faceCells, i)
             {
                 const vector& Uc = Ui[faceCells[i]];
-                grad[faceCells[i]] -= w[i]*(2*(N[i] & Uc)*N[i]);
+                const vector normal((N[i] & Uc)*N[i]);
+                grad[faceCells[i]] -=
+                    w[i]*(skew ? 2*(Uc - normal) : 2*normal);
             }
             continue;
         }
@@ -256,12 +260,20 @@ void Foam::linearPointInterpolation::addTranspose
             const label patchi = patches.patchID()[facei - nInternal];
             if (reconstruction_.mirror(patchi))
             {
-                // The gradient gained w (x) (R - I) U_e from the reflected
-                // cell, R = I - 2 N N: its transpose stays in the cell
+                // The gradient gained w (x) (s R - I) U_e from the
+                // reflected cell, R = I - 2 N N: its transpose, symmetric
+                // as R, stays in the cell
                 const label i = facei - mesh_.boundary()[patchi].start();
                 const vector& N = reconstruction_.mirrorNormals(patchi)[i];
                 const vector q(H & reconstruction_.coupledWeights(patchi)[i]);
-                cellValues[celli] -= (2*(N & q))*N;
+                if (reconstruction_.mirrorSign(patchi) < 0)
+                {
+                    cellValues[celli] -= 2*(q - (N & q)*N);
+                }
+                else
+                {
+                    cellValues[celli] -= (2*(N & q))*N;
+                }
             }
             else if (mesh_.boundary()[patchi].coupled())
             {

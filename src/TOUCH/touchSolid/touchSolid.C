@@ -91,27 +91,33 @@ bool Foam::touchSolid::readMirrorPlanes(const dictionary& controls)
 }
 
 
-Foam::boolList Foam::touchSolid::mirrorPatches
+Foam::scalarList Foam::touchSolid::mirrorPatches
 (
     const volVectorField& lm,
     const bool mirrorPlanes
 )
 {
-    boolList mirror(lm.boundaryField().size(), false);
+    scalarList signs(lm.boundaryField().size(), scalar(0));
     if (!mirrorPlanes)
     {
-        return mirror;
+        return signs;
     }
 
     forAll(lm.boundaryField(), patchi)
     {
         const fvPatchVectorField& pf = lm.boundaryField()[patchi];
-        mirror[patchi] =
-            isA<solidFluxFvPatchVectorField>(pf)
-         && refCast<const solidFluxFvPatchVectorField>(pf).mirror();
+        if (isA<solidFluxFvPatchVectorField>(pf))
+        {
+            const solidFluxFvPatchVectorField& condition =
+                refCast<const solidFluxFvPatchVectorField>(pf);
+            if (condition.mirror())
+            {
+                signs[patchi] = condition.mirrorSign();
+            }
+        }
     }
 
-    return mirror;
+    return signs;
 }
 
 

@@ -133,6 +133,7 @@ void Foam::linearReconstruction::reflectMirrorValues
         }
 
         const vectorField& N = mirrorNormals_[patchi];
+        const scalar sign = mirrorSign_[patchi];
         const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
         vectorField& pR = pNeighbour_[patchi];
         tensorField& PR = PNeighbour_[patchi];
@@ -142,8 +143,8 @@ void Foam::linearReconstruction::reflectMirrorValues
             const tensor R(tensor::I - 2*sqr(N[i]));
             const label c = faceCells[i];
 
-            pR[i] = R & p[c];
-            PR[i] = R & P[c] & R;
+            pR[i] = sign*(R & p[c]);
+            PR[i] = sign*(R & P[c] & R);
         }
     }
 }
@@ -155,7 +156,7 @@ Foam::linearReconstruction::linearReconstruction
 (
     const fvMesh& mesh,
     const dictionary& dict,
-    const boolList& mirror
+    const scalarList& mirrorSigns
 )
 :
     mesh_(mesh),
@@ -174,7 +175,8 @@ Foam::linearReconstruction::linearReconstruction
     Minv_(mesh.nCells()),
     inverseDistanceSqr_(mesh.nInternalFaces()),
     coupledWeights_(mesh.boundary().size()),
-    mirror_(mirror.empty() ? boolList(mesh.boundary().size(), false) : mirror),
+    mirror_(mesh.boundary().size(), false),
+    mirrorSign_(mesh.boundary().size(), scalar(1)),
     mirrorNormals_(mesh.boundary().size()),
     gradp_
     (
@@ -196,6 +198,15 @@ Foam::linearReconstruction::linearReconstruction
     if (limiter_.valid())
     {
         momentumLimiter_.setSize(mesh.nCells());
+    }
+
+    forAll(mirrorSigns, patchi)
+    {
+        if (mirrorSigns[patchi] != 0)
+        {
+            mirror_[patchi] = true;
+            mirrorSign_[patchi] = mirrorSigns[patchi];
+        }
     }
 
     forAll(mesh.boundary(), patchi)
