@@ -548,6 +548,20 @@ Foam::scalar Foam::deformationUpdates::compatible::stableCFL
     const word& timeScheme
 ) const
 {
+    // Limited (the impacts): the Taylor bar on -n 6 gains energy above
+    // 0.3 with either scheme (RK2 0.45: 3.4e-5 E0, RK3 0.5: 1.7e-3 E0),
+    // and the bar rebound's cells invert at RK3 1.0 (-n 9, 12) and, on
+    // polyhedra, 0.8 (validation/stabilityMap/FINDINGS.md 11): the
+    // limiter, not the scheme's linear stability, sets the step there
+    if
+    (
+        faces_.reconstruction().schemeType()
+     == linearReconstruction::scheme::limitedLinear
+    )
+    {
+        return 0.3;
+    }
+
     // Twisting column, 4 x 24 x 4 and 8 x 48 x 8, nu 0.45, with the
     // quadratic jump share and the step of the cells' current heights:
     // the energy never grows up to these (at RK2 0.7 4 x 24 x 4 gains
