@@ -84,16 +84,12 @@ void Foam::linearPointInterpolation::interpolate
 
         if (reconstruction_.mirror(patchi))
         {
-            // The reflected cell: U' - U = -2 (N.U) N (symmetric plane) or
-            // -2 (U - (N.U) N) (skew-symmetric: U' = -R U)
-            const vectorField& N = reconstruction_.mirrorNormals(patchi);
-            const bool skew = reconstruction_.mirrorSign(patchi) < 0;
+            // The reflected cell: U' - U = (s R - I) U
             forAll(faceCells, i)
             {
-                const vector& Uc = Ui[faceCells[i]];
-                const vector normal((N[i] & Uc)*N[i]);
-                grad[faceCells[i]] -=
-                    w[i]*(skew ? 2*(Uc - normal) : 2*normal);
+                grad[faceCells[i]] +=
+                    w[i]
+                   *reconstruction_.mirrorJump(patchi, i, Ui[faceCells[i]]);
             }
             continue;
         }
@@ -264,16 +260,8 @@ void Foam::linearPointInterpolation::addTranspose
                 // reflected cell, R = I - 2 N N: its transpose, symmetric
                 // as R, stays in the cell
                 const label i = facei - mesh_.boundary()[patchi].start();
-                const vector& N = reconstruction_.mirrorNormals(patchi)[i];
                 const vector q(H & reconstruction_.coupledWeights(patchi)[i]);
-                if (reconstruction_.mirrorSign(patchi) < 0)
-                {
-                    cellValues[celli] -= 2*(q - (N & q)*N);
-                }
-                else
-                {
-                    cellValues[celli] -= (2*(N & q))*N;
-                }
+                cellValues[celli] += reconstruction_.mirrorJump(patchi, i, q);
             }
             else if (mesh_.boundary()[patchi].coupled())
             {
