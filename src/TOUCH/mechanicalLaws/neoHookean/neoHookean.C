@@ -42,7 +42,7 @@ Foam::tensor Foam::mechanicalLaws::neoHookean::P(const tensor& F) const
     const scalar FF = F && F;
 
     return
-        mu_*pow(J, -2.0/3.0)*(F - (FF/(3*J))*H)
+        mu_*isochoricFactor(J)*(F - (FF/(3*J))*H)
       + kappa_*(J - 1)*H;
 }
 
@@ -54,7 +54,7 @@ Foam::scalar Foam::mechanicalLaws::neoHookean::strainEnergy
 {
     const scalar J = det(F);
 
-    return 0.5*mu_*(pow(J, -2.0/3.0)*(F && F) - 3) + 0.5*kappa_*sqr(J - 1);
+    return 0.5*mu_*(isochoricFactor(J)*(F && F) - 3) + 0.5*kappa_*sqr(J - 1);
 }
 
 

@@ -46,28 +46,20 @@ inline Foam::scalar Foam::linearReconstruction::factor
 }
 
 
-template<class Type>
-inline Type Foam::linearReconstruction::factors
+inline Foam::packedMomentumStress Foam::linearReconstruction::increment
 (
-    const Type& up,
-    const Type& down,
-    const Type& largestUp,
-    const Type& largestDown,
-    const scalar tolerance
-) const
+    const vector& r,
+    const packedMomentumStress& gX,
+    const packedMomentumStress& gY,
+    const packedMomentumStress& gZ
+)
 {
-    Type phi;
-    for (direction i = 0; i < pTraits<Type>::nComponents; ++i)
-    {
-        setComponent(phi, i) =
-            factor
-            (
-                component(up, i), component(down, i),
-                component(largestUp, i), component(largestDown, i),
-                tolerance
-            );
-    }
-    return phi;
+    return packedMomentumStress
+    (
+        r.x()*gX.a + r.y()*gY.a + r.z()*gZ.a,
+        r.x()*gX.b + r.y()*gY.b + r.z()*gZ.b,
+        r.x()*gX.c + r.y()*gY.c + r.z()*gZ.c
+    );
 }
 
 
@@ -158,21 +150,20 @@ void Foam::linearReconstruction::updateCells
 
     tensorField& gp = gradp_.primitiveFieldRef();
 
+    typedef packedMomentumStress packed;
+
     for (label c = 0; c < cells.size(); ++c)
     {
         const UList<label> cellFaces(cells[c]);
-        const vector& pc = pi[c];
-        const tensor& Pc = Pi[c];
+        const packed centre(pi[c], Pi[c]);
 
-        // Pass 1: the gradients and the bounds of the face neighbours
-        tensor gpc(Zero);
-        tensor gxc(Zero);
-        tensor gyc(Zero);
-        tensor gzc(Zero);
-        vector pMax(pc);
-        vector pMin(pc);
-        tensor PMax(Pc);
-        tensor PMin(Pc);
+        // Pass 1: the derivatives of every component along X, Y and Z and
+        // the bounds of the face neighbours
+        packed gX(0.0);
+        packed gY(0.0);
+        packed gZ(0.0);
+        packed largest(centre);
+        packed smallest(centre);
 
         for (const label facei : cellFaces)
         {
@@ -202,22 +193,27 @@ void Foam::linearReconstruction::updateCells
                 POther = &PNeighbour_[patchi][i];
             }
 
-            const vector dp(*pOther - pc);
-            const tensor dP(*POther - Pc);
+            const packed other(*pOther, *POther);
+            const packed jump(other - centre);
 
-            gpc += w*dp;
-            gxc += w.x()*dP;
-            gyc += w.y()*dP;
-            gzc += w.z()*dP;
+            gX.addScaled(w.x(), jump);
+            gY.addScaled(w.y(), jump);
+            gZ.addScaled(w.z(), jump);
 
             if (limited)
             {
-                pMax = max(pMax, *pOther);
-                pMin = min(pMin, *pOther);
-                PMax = max(PMax, *POther);
-                PMin = min(PMin, *POther);
+                largest.raise(other);
+                smallest.lower(other);
             }
         }
+
+        // Row i of grad p is d p/d X_i
+        const tensor gpc
+        (
+            gX.a[0], gX.a[1], gX.a[2],
+            gY.a[0], gY.a[1], gY.a[2],
+            gZ.a[0], gZ.a[1], gZ.a[2]
+        );
 
         if (!limited)
         {
@@ -228,10 +224,10 @@ void Foam::linearReconstruction::updateCells
                 for (const label facei : cellFaces)
                 {
                     const vector r(Cf[facei] - C[c]);
-                    dPf[k++] = r.x()*gxc + r.y()*gyc + r.z()*gzc;
+                    increment(r, gX, gY, gZ).stress(dPf[k++]);
                 }
             }
-            cellOp(c, gxc, gyc, gzc, unlimited, dPf);
+            cellOp(c, gX.stress(), gY.stress(), gZ.stress(), unlimited, dPf);
             continue;
         }
 
@@ -247,18 +243,15 @@ void Foam::linearReconstruction::updateCells
         // and round-off-level tangential noise would clip its whole
         // gradient (measured: a free rigid rotation lost a third of its
         // energy in a quarter turn)
-        vector pUp(Zero);
-        vector pDown(Zero);
-        tensor PUp(Zero);
-        tensor PDown(Zero);
+        packed largestUp(0.0);
+        packed largestDown(0.0);
 
         label k = 0;
         for (const label facei : cellFaces)
         {
             const vector r(Cf[facei] - C[c]);
-            const vector dp(r & gpc);
-            const tensor& dP =
-                (dPf[k++] = r.x()*gxc + r.y()*gyc + r.z()*gzc);
+            const packed inc(increment(r, gX, gY, gZ));
+            inc.stress(dPf[k++]);
 
             if
             (
@@ -266,27 +259,44 @@ void Foam::linearReconstruction::updateCells
              && !pNeighbour_.set(boundaryFacePatch_[facei - nInternal])
             )
             {
-                pMax = max(pMax, pc + dp);
-                pMin = min(pMin, pc + dp);
-                PMax = max(PMax, Pc + dP);
-                PMin = min(PMin, Pc + dP);
+                const packed faceValue(centre + inc);
+                largest.raise(faceValue);
+                smallest.lower(faceValue);
             }
             else
             {
-                pUp = max(pUp, dp);
-                pDown = min(pDown, dp);
-                PUp = max(PUp, dP);
-                PDown = min(PDown, dP);
+                largestUp.raise(inc);
+                largestDown.lower(inc);
             }
         }
 
-        const vector phip
-        (
-            factors(pMax - pc, pMin - pc, pUp, pDown, pTolerance)
-        );
+        // The factors of the 3 + 9 components
+        scalar up[packed::nComponents];
+        scalar down[packed::nComponents];
+        scalar upMost[packed::nComponents];
+        scalar downMost[packed::nComponents];
+        (largest - centre).components(up);
+        (smallest - centre).components(down);
+        largestUp.components(upMost);
+        largestDown.components(downMost);
+
+        scalar phi[packed::nComponents];
+        for (label i = 0; i < packed::nComponents; ++i)
+        {
+            phi[i] =
+                factor
+                (
+                    up[i], down[i], upMost[i], downMost[i],
+                    i < 3 ? pTolerance : PTolerance
+                );
+        }
+
+        const vector phip(phi[0], phi[1], phi[2]);
         const tensor phiP
         (
-            factors(PMax - Pc, PMin - Pc, PUp, PDown, PTolerance)
+            phi[3], phi[4], phi[5],
+            phi[6], phi[7], phi[8],
+            phi[9], phi[10], phi[11]
         );
 
         momentumLimiter_[c] = phip;
@@ -312,7 +322,7 @@ void Foam::linearReconstruction::updateCells
                 dPf[f] = cmptMultiply(dPf[f], phiP);
             }
         }
-        cellOp(c, gxc, gyc, gzc, phiP, dPf);
+        cellOp(c, gX.stress(), gY.stress(), gZ.stress(), phiP, dPf);
     }
 
     gradp_.correctBoundaryConditions();
