@@ -28,4 +28,17 @@ Foam::scalar Foam::gradientLimiters::BarthJespersen::limiter(const scalar r) con
 }
 
 
+void Foam::gradientLimiters::BarthJespersen::factors
+(
+    scalar* r,
+    const label n
+) const
+{
+    for (label i = 0; i < n; ++i)
+    {
+        r[i] = min(scalar(1), r[i]);
+    }
+}
+
+
 // ************************************************************************* //

@@ -42,4 +42,15 @@ Foam::autoPtr<Foam::gradientLimiter> Foam::gradientLimiter::New
 }
 
 
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::gradientLimiter::factors(scalar* r, const label n) const
+{
+    for (label i = 0; i < n; ++i)
+    {
+        r[i] = min(scalar(1), limiter(r[i]));
+    }
+}
+
+
 // ************************************************************************* //

@@ -167,7 +167,6 @@ Foam::linearReconstruction::linearReconstruction
       ? gradientLimiter::New(dict)
       : autoPtr<gradientLimiter>()
     ),
-    unitRatio_(limiter_.valid() ? limiter_->unitRatio() : GREAT),
     boundaryFacePatch_(mesh.nFaces() - mesh.nInternalFaces(), -1),
     pNeighbour_(mesh.boundary().size()),
     PNeighbour_(mesh.boundary().size()),

@@ -10,42 +10,6 @@ License
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
-inline Foam::scalar Foam::linearReconstruction::factor
-(
-    const scalar up,
-    const scalar down,
-    const scalar largestUp,
-    const scalar largestDown,
-    const scalar tolerance
-) const
-{
-    // The ratio is non-increasing in the increment, and min(1, limiter)
-    // non-decreasing in the ratio (gradientLimiter)
-    const scalar unit = unitRatio_;
-    if
-    (
-        (largestUp <= tolerance || up >= unit*largestUp)
-     && (largestDown >= -tolerance || down <= unit*largestDown)
-    )
-    {
-        return 1;
-    }
-
-    scalar r = GREAT;
-
-    if (largestUp > tolerance)
-    {
-        r = up/largestUp;
-    }
-    if (largestDown < -tolerance)
-    {
-        r = min(r, down/largestDown);
-    }
-
-    return min(scalar(1), limiter_->limiter(r));
-}
-
-
 inline Foam::packedMomentumStress Foam::linearReconstruction::increment
 (
     const vector& r,
@@ -147,6 +111,11 @@ void Foam::linearReconstruction::updateCells
         pTolerance = roundOff_*Foam::sqrt(pTolerance);
         PTolerance = roundOff_*Foam::sqrt(PTolerance);
     }
+    const packedMomentumStress tolerance
+    (
+        vector(pTolerance, pTolerance, pTolerance),
+        tensor(PTolerance*tensor::one)
+    );
 
     tensorField& gp = gradp_.primitiveFieldRef();
 
@@ -270,26 +239,17 @@ void Foam::linearReconstruction::updateCells
             }
         }
 
-        // The factors of the 3 + 9 components
-        scalar up[packed::nComponents];
-        scalar down[packed::nComponents];
-        scalar upMost[packed::nComponents];
-        scalar downMost[packed::nComponents];
-        (largest - centre).components(up);
-        (smallest - centre).components(down);
-        largestUp.components(upMost);
-        largestDown.components(downMost);
-
+        // The factors of the 3 + 9 components, one limiter call a cell
         scalar phi[packed::nComponents];
-        for (label i = 0; i < packed::nComponents; ++i)
-        {
-            phi[i] =
-                factor
-                (
-                    up[i], down[i], upMost[i], downMost[i],
-                    i < 3 ? pTolerance : PTolerance
-                );
-        }
+        packed::ratios
+        (
+            largest - centre,
+            smallest - centre,
+            largestUp,
+            largestDown,
+            tolerance
+        ).components(phi);
+        limiter_->factors(phi, packed::nComponents);
 
         const vector phip(phi[0], phi[1], phi[2]);
         const tensor phiP
