@@ -447,10 +447,15 @@ def markdown(res):
             "%.3f" % b["measuredOverBound"]
             if b["measuredOverBound"] is not None else "-",
             "%.2f" % (state / l3) if l3 else "-"))
-    lines += ["", "state/L3: the baseline's net peak memory over the %s MB "
-              "L3; where it is below 1 or near it, the state is largely "
-              "cache-resident and the bound does not apply. %s."
-              % (l3 // 2 ** 20 if l3 else "?", res["machine"]["perf"])]
+    if l3:
+        lines += ["", "state/L3: the baseline's net peak memory over the %d "
+                  "MB L3; where it is below 1 or near it, the state is "
+                  "largely cache-resident and the bound does not apply. %s."
+                  % (l3 // 2 ** 20, res["machine"]["perf"])]
+    else:
+        lines += ["", "state/L3: not computed, this machine does not give "
+                  "its L3 size (/sys/devices/system/cpu/cpu0/cache/index3 "
+                  "is absent). %s." % res["machine"]["perf"]]
     p = res["parallel"]
     if p:
         lines += ["", "Parallel, baseline on %d cells (%s): 1 rank %.4g "
