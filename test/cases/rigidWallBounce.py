@@ -37,8 +37,10 @@ Asserted (bounce on both meshes unless said):
                   bar moves away), reported as a fraction of M v0
   energy          the total energy never increases (1e-12 E0 per step)
   momentum        p_x changes only in steps with a face in contact at some
-                  stage (1e-12 |p0|), p_y = p_z = 0; the impulse of the monitor's
-                  wall force matches the change of p_x within 2 %
+                  stage (1e-12 |p0|), p_y = p_z = 0; the impulse of the
+                  monitor's wall force is the change of p_x to 1e-5 (the
+                  force is the one the momentum rate has from the wall,
+                  to the monitor's time column, written to 6 digits)
   moving          contact counts equal the fixed wall's step by step,
                   p_x - M v0 and the energy in the wall's frame,
                   E - v_w p_x + M v_w^2/2, equal the fixed wall's: 1e-10
@@ -70,7 +72,7 @@ COLUMN_N = "contactFaces(wall)"
 COLUMN_F = "wallForce(wall)"
 #: relative tolerances
 LIMITS = {"separation": 0.05, "meshes": 0.05, "energy": 1e-12,
-          "momentum": 1e-12, "impulse": 0.02, "frame": 1e-10}
+          "momentum": 1e-12, "impulse": 1e-5, "frame": 1e-10}
 
 
 def wall_entry(gap, velocity=0.0):
@@ -176,7 +178,7 @@ def check_bounce(label, b, failures):
             failures.append("%s: %s %.2e |p0|" % (label, key, b[key]))
     if abs(b["impulse"]) > LIMITS["impulse"]:
         failures.append("%s: wall force impulse off the change of p_x by "
-                        "%+.2f %%" % (label, 100 * b["impulse"]))
+                        "%+.2e" % (label, b["impulse"]))
 
 
 def relative(a, b, scale):

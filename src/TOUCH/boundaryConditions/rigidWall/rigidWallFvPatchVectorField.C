@@ -138,7 +138,8 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     contact_(p.size(), false),
     stepContact_(contact_),
     stepForce_(Zero),
-    nStages_(0)
+    nStages_(0),
+    stageForce_(Zero)
 {}
 
 
@@ -159,7 +160,8 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     contact_(readContact(p, dict)),
     stepContact_(contact_),
     stepForce_(Zero),
-    nStages_(0)
+    nStages_(0),
+    stageForce_(Zero)
 {
     checkSide();
 }
@@ -180,7 +182,8 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     contact_(toBool(scalarField(toScalar(ptf.contact_), mapper))),
     stepContact_(contact_),
     stepForce_(Zero),
-    nStages_(0)
+    nStages_(0),
+    stageForce_(Zero)
 {}
 
 
@@ -197,7 +200,8 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     contact_(ptf.contact_),
     stepContact_(ptf.stepContact_),
     stepForce_(ptf.stepForce_),
-    nStages_(ptf.nStages_)
+    nStages_(ptf.nStages_),
+    stageForce_(ptf.stageForce_)
 {}
 
 
@@ -240,6 +244,7 @@ void Foam::rigidWallFvPatchVectorField::updateActiveSet
         nStages_ = 0;
     }
     ++nStages_;
+    stageForce_ = Zero;
 
     forAll(contact_, facei)
     {
@@ -265,9 +270,21 @@ void Foam::rigidWallFvPatchVectorField::updateActiveSet
         if (contact_[facei])
         {
             stepContact_[facei] = true;
-            stepForce_ += (tW*magSf[facei])*normal_;
+            stageForce_ += (tW*magSf[facei])*normal_;
         }
     }
+
+    stepForce_ += stageForce_;
+}
+
+
+void Foam::rigidWallFvPatchVectorField::correctStageForce
+(
+    const vector& force
+)
+{
+    stepForce_ += force - stageForce_;
+    stageForce_ = force;
 }
 
 

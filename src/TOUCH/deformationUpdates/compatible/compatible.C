@@ -379,12 +379,15 @@ void Foam::deformationUpdates::compatible::addBoundaryRate
             // the constraint's reaction
             const vectorField& tC = tC_[patchi];
             const scalarField& magSf = patch.magSf();
+            vector faceForce(Zero);
             forAll(faceCells, i)
             {
                 const tensor fixed(tensor::I - free[i]);
-                lmRate[faceCells[i]] +=
-                    (tC[i] - (fixed & state.t[i]))*magSf[i];
+                const vector force((tC[i] - (fixed & state.t[i]))*magSf[i]);
+                lmRate[faceCells[i]] += force;
+                faceForce += force;
             }
+            faceForce_[patchi] = faceForce;
 
             // The reconstructed traction against the condition's
             if (pointUpwinding_ > 0)
@@ -465,6 +468,8 @@ Foam::deformationUpdates::compatible::compatible
     constraints_(faces.mesh()),
     faceFree_(faces.mesh().boundary().size()),
     faceVelocity_(faces.mesh().boundary().size()),
+    faceForce_(faces.mesh().boundary().size(), Zero),
+    fixingFace_(faces.mesh().boundary().size()),
     pointForce_(faces.mesh().nPoints(), Zero),
     quadraticShare_(readQuadraticShare(controls)),
     pointUpwinding_(controls.getOrDefault<scalar>("pointUpwinding", 1)),
@@ -520,6 +525,7 @@ void Foam::deformationUpdates::compatible::rates
 
     constraints_.finalise();
     completeNodalForces();
+    reportWallForces();
 
     // Point velocities v_a = Pi_a (A v)_a + b_a, and the upwinding of the
     // nodal forces

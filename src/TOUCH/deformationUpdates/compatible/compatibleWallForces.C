@@ -1,0 +1,109 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+
+Description
+    The compatible update's report of the force a condition applies (a
+    rigid wall): the force its faces add to the momentum rate and the
+    reaction of its constraint at its points.
+
+\*---------------------------------------------------------------------------*/
+
+#include "compatible.H"
+#include "syncTools.H"
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+void Foam::deformationUpdates::compatible::reportWallForces()
+{
+    const fvMesh& mesh = faces_.mesh();
+
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh.boundary()[patchi];
+
+        if (patch.coupled())
+        {
+            continue;
+        }
+
+        solidFluxFvPatchVectorField& condition =
+            refCast<solidFluxFvPatchVectorField>
+            (
+                faces_.lm().boundaryFieldRef()[patchi]
+            );
+
+        // Every rank takes part (the sync), also one whose part of the
+        // patch is empty
+        if (!condition.reportsForce())
+        {
+            continue;
+        }
+
+        const labelList& meshPoints = patch.patch().meshPoints();
+        const faceList& localFaces = patch.patch().localFaces();
+        const tensorField& free = faceFree_[patchi];
+
+        // Sized on first use, for the patches of such a condition alone
+        if (pointMarks_.empty())
+        {
+            pointMarks_.setSize(mesh.nPoints());
+        }
+        if (!fixingFace_.set(patchi))
+        {
+            fixingFace_.set(patchi, new labelList(meshPoints.size()));
+        }
+
+        // The points of the faces that fix a direction, with the fixed
+        // projector of one of them, and on how many ranks each is one
+        labelList& fixingFace = fixingFace_[patchi];
+        fixingFace = -1;
+        forAll(localFaces, i)
+        {
+            if (magSqr(tensor::I - free[i]) > SMALL)
+            {
+                for (const label pointj : localFaces[i])
+                {
+                    fixingFace[pointj] = i;
+                }
+            }
+        }
+
+        pointMarks_ = 0;
+        forAll(meshPoints, j)
+        {
+            pointMarks_[meshPoints[j]] = fixingFace[j] >= 0;
+        }
+        syncTools::syncPointList
+        (
+            mesh, pointMarks_, plusEqOp<label>(), label(0)
+        );
+
+        // The wall's part of the constraint's reaction at those points,
+        // each rank its share
+        vector reaction(Zero);
+        forAll(meshPoints, j)
+        {
+            if (fixingFace[j] >= 0)
+            {
+                const label pointi = meshPoints[j];
+                const tensor fixed(tensor::I - free[fixingFace[j]]);
+                reaction +=
+                    (
+                        fixed
+                      & constraints_.reaction(pointi, pointForce_[pointi])
+                    )/pointMarks_[pointi];
+            }
+        }
+
+        condition.correctStageForce
+        (
+            (patch.size() ? faceForce_[patchi] : vector(Zero)) + reaction
+        );
+    }
+}
+
+
+// ************************************************************************* //
