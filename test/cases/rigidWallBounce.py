@@ -145,14 +145,14 @@ def bounce_metrics(m, gap, cp, L=1.0):
 def bounce_line(label, b):
     return ("%s: contact %.4g ms (theory %.4g, step %.2g), separation "
             "%.4g ms (theory %.4g, %+.2f %%, contact %+.2f %% of 2L/c_p), "
-            "leaves with %.3f M v0, energy %.4f E0 (rise %.1e), impulse "
-            "%+.2f %%" % (label, 1e3 * b["tContact"],
+            "leaves with %.3f M v0, energy %.4f E0 (rise %.1e), wall "
+            "impulse / change of p_x - 1 %+.1e" % (label, 1e3 * b["tContact"],
                           1e3 * b["tContactTheory"], 1e3 * b["dt"],
                           1e3 * b["tSeparation"],
                           1e3 * b["tSeparationTheory"],
                           100 * b["separation"], 100 * b["duration"],
                           b["pAfter"], b["energyEnd"], b["energyRise"],
-                          100 * b["impulse"]))
+                          b["impulse"]))
 
 
 def check_bounce(label, b, failures):
