@@ -135,8 +135,12 @@ bool Foam::functionObjects::solidMonitor::execute()
     if (Pstream::master() && writeToFile())
     {
         OFstream& os = file();
+        // The time to the same 16 digits as the values (writeCurrentTime
+        // gives the time name, to timePrecision, 6 digits by default): the
+        // steps' lengths, and so the impulse of the wall force over a
+        // run, are then exact to round-off
         os.precision(16);
-        writeCurrentTime(os);
+        os  << setw(charWidth()) << mesh_.time().value();
         os  << tab << p.x() << tab << p.y() << tab << p.z()
             << tab << L.x() << tab << L.y() << tab << L.z()
             << tab << kinetic << tab << stored << tab << kinetic + stored;
