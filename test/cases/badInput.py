@@ -15,6 +15,10 @@ On a 4^3 swinging cube, one mistake at a time:
     (the cube has none: its skewSymmetricPlane patches become one),
     'velocty' in a prescribedVelocity entry and in a symmetricPlane entry;
     the error lists the condition's valid keywords,
+  - a misspelt Function1 type of a prescribed velocity (tabel), a pressure
+    (sinus) and a rigid wall's velocity (tabel): OpenFOAM's error names the
+    entry and the patch and lists the valid types; a rigid wall's velocity
+    OpenFOAM cannot integrate (sine) is refused naming the valid ones,
   - a misspelt F update (FUpdate compatibel) and time scheme (timeScheme
     RK4) in system/fvSolution TOUCH,
   - model vonMisesPlastic with yieldStress 0, and with hardeningModulus -1,
@@ -72,6 +76,25 @@ MISTAKES = [
      (r"type\s+symmetricPlane;",
       "type prescribedVelocity; velocty uniform (0 0 0);"),
      ["velocty", "lm", "velocity"]),
+    ("velocityFunction1", "0/lm",
+     (r"type\s+symmetricPlane;",
+      "type prescribedVelocity; velocity tabel ((0 (0 0 0)) (1 (1 0 0)));"),
+     ["tabel", "velocity", "lm", "X0", "table", "tableFile", "sine"]),
+    ("pressureFunction1", "0/lm",
+     (r"type\s+skewSymmetricPlane;",
+      "type traction; pressure sinus; pressureCoeffs { frequency 1; }"),
+     ["sinus", "pressure", "lm", "X1", "table", "sine", "square"]),
+    ("wallFunction1", "0/lm",
+     (r"type\s+symmetricPlane;",
+      "type rigidWall; point (0 0 0); normal (1 0 0); "
+      "velocity tabel ((0 (0 0 0)) (1 (1 0 0)));"),
+     ["tabel", "velocity", "lm", "X0", "table", "polynomial"]),
+    ("wallVelocityIntegral", "0/lm",
+     (r"type\s+symmetricPlane;",
+      "type rigidWall; point (0 0 0); normal (1 0 0); velocity sine; "
+      "velocityCoeffs { frequency 1; amplitude 1; scale (1 0 0); "
+      "level (0 0 0); }"),
+     ["'sine'", "velocity", "lm", "X0", "constant", "table", "csvFile"]),
     ("symmetricPlaneKeyword", "0/lm",
      (r"type\s+symmetricPlane;",
       "type symmetricPlane; velocty uniform (0 0 0);"),

@@ -173,7 +173,7 @@ residuals measure
 
         const solidFluxFvPatchVectorField::interiorState s
         {
-            p, t, n, x, x, rho, Up, Us, rnd.position<label>(1, 3)
+            p, t, n, x, x, rho, Up, Us, rnd.position<label>(1, 3), 0
         };
 
         // The active set first, as the solver does at each stage

@@ -140,7 +140,7 @@ int main(int argc, char *argv[])
 
         const solidFluxFvPatchVectorField::interiorState interior
         {
-            pM, tM, nM, xM, xM, rho, Up, Us, 1
+            pM, tM, nM, xM, xM, rho, Up, Us, 1, 0
         };
         vectorField pC(size), tC(size);
         bc.flux(interior, pC, tC);

@@ -34,12 +34,24 @@ Foam::scalarList Foam::rungeKutta::weights
 }
 
 
+Foam::scalarList Foam::rungeKutta::stageTimes(const scalarList& alpha)
+{
+    scalarList c(alpha.size(), Zero);
+    for (label k = 1; k < alpha.size(); ++k)
+    {
+        c[k] = (1 - alpha[k - 1])*(c[k - 1] + 1);
+    }
+    return c;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::rungeKutta::rungeKutta(const dictionary& controls)
 :
     name_(controls.getOrDefault<word>("timeScheme", "RK2")),
-    alpha_(weights(controls, name_))
+    alpha_(weights(controls, name_)),
+    c_(stageTimes(alpha_))
 {}
 
 

@@ -115,7 +115,8 @@ Foam::solidFaces::solidFaces
     F_(F),
     P_(P),
     u_(u),
-    pointU_(pointU)
+    pointU_(pointU),
+    stageTime_(mesh.time().value())
 {
     auto coupled = [](const fvPatch& patch) { return patch.coupled(); };
     auto solid = [](const fvPatch& patch) { return !patch.coupled(); };

@@ -97,12 +97,14 @@ void Foam::solidFaces::forAllSolidPatches
         const solidFluxFvPatchVectorField::interiorState state
         {
             pM_[patchi], tM_[patchi], nM_[patchi], xM_[patchi],
-            xPointsM_[patchi], law.rho(), law.Up(), law.Us(), stage
+            xPointsM_[patchi], law.rho(), law.Up(), law.Us(), stage,
+            stageTime_
         };
         const solidFluxFvPatchVectorField::interiorState reference
         {
             pM_[patchi], tM_[patchi], NM_[patchi], xM_[patchi],
-            xPointsM_[patchi], law.rho(), law.Up(), law.Us(), stage
+            xPointsM_[patchi], law.rho(), law.Up(), law.Us(), stage,
+            stageTime_
         };
 
         solidFluxFvPatchVectorField& condition =

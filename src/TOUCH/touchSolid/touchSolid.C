@@ -171,6 +171,17 @@ void Foam::touchSolid::computeRates(const label stage)
         );
     }
 
+    // The time of the stage's state: the mesh's time is the step's end
+    // (advanced before the stages)
+    const Time& time = mesh_.time();
+    const scalar c = rungeKutta_.stageTime(stage);
+    faces_.setStageTime
+    (
+        c == 1
+      ? time.value()
+      : time.value() - time.deltaTValue() + c*time.deltaTValue()
+    );
+
     update_->rates(stage, lmRate_, FRate_, pointV_.primitiveFieldRef(), torque_);
 
     reduce(torque_, sumOp<vector>());

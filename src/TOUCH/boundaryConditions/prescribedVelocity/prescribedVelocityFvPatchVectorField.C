@@ -7,6 +7,7 @@ License
 
 #include "prescribedVelocityFvPatchVectorField.H"
 #include "addToRunTimeSelectionTable.H"
+#include "ConstantField.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -17,7 +18,13 @@ Foam::prescribedVelocityFvPatchVectorField::prescribedVelocityFvPatchVectorField
 )
 :
     solidFluxFvPatchVectorField(p, iF),
-    velocity_(p.size(), Zero)
+    velocity_
+    (
+        new PatchFunction1Types::ConstantField<vector>
+        (
+            p.patch(), "velocity", true, Zero, vectorField(p.size(), Zero)
+        )
+    )
 {}
 
 
@@ -28,8 +35,11 @@ Foam::prescribedVelocityFvPatchVectorField::prescribedVelocityFvPatchVectorField
     const dictionary& dict
 )
 :
-    solidFluxFvPatchVectorField(p, iF, dict, wordList({"velocity"})),
-    velocity_("velocity", dict, p.size())
+    solidFluxFvPatchVectorField
+    (
+        p, iF, dict, wordList({"velocity", "velocityCoeffs"})
+    ),
+    velocity_(PatchFunction1<vector>::New(p.patch(), "velocity", dict))
 {}
 
 
@@ -42,8 +52,10 @@ Foam::prescribedVelocityFvPatchVectorField::prescribedVelocityFvPatchVectorField
 )
 :
     solidFluxFvPatchVectorField(ptf, p, iF, mapper),
-    velocity_(ptf.velocity_, mapper)
-{}
+    velocity_(ptf.velocity_.clone(p.patch()))
+{
+    velocity_->autoMap(mapper);
+}
 
 
 Foam::prescribedVelocityFvPatchVectorField::prescribedVelocityFvPatchVectorField
@@ -53,7 +65,17 @@ Foam::prescribedVelocityFvPatchVectorField::prescribedVelocityFvPatchVectorField
 )
 :
     solidFluxFvPatchVectorField(ptf, iF),
-    velocity_(ptf.velocity_)
+    velocity_(ptf.velocity_.clone(this->patch().patch()))
+{}
+
+
+Foam::prescribedVelocityFvPatchVectorField::prescribedVelocityFvPatchVectorField
+(
+    const prescribedVelocityFvPatchVectorField& ptf
+)
+:
+    solidFluxFvPatchVectorField(ptf),
+    velocity_(ptf.velocity_.clone(this->patch().patch()))
 {}
 
 
@@ -66,26 +88,26 @@ void Foam::prescribedVelocityFvPatchVectorField::flux
     vectorField& tC
 ) const
 {
-    momentumFlux(s, s.rho*velocity_, pC, tC);
+    momentumFlux(s, s.rho*velocity_->value(s.time), pC, tC);
 }
 
 
 
 void Foam::prescribedVelocityFvPatchVectorField::constraint
 (
-    const interiorState&,
+    const interiorState& s,
     tensorField& free,
     vectorField& velocity
 ) const
 {
     free = Zero;
-    velocity = velocity_;
+    velocity = velocity_->value(s.time);
 }
 
 void Foam::prescribedVelocityFvPatchVectorField::autoMap(const fvPatchFieldMapper& m)
 {
     solidFluxFvPatchVectorField::autoMap(m);
-    velocity_.autoMap(m);
+    velocity_->autoMap(m);
 }
 
 
@@ -99,14 +121,14 @@ void Foam::prescribedVelocityFvPatchVectorField::rmap
 
     const prescribedVelocityFvPatchVectorField& tiptf = refCast<const prescribedVelocityFvPatchVectorField>(ptf);
 
-    velocity_.rmap(tiptf.velocity_, addr);
+    velocity_->rmap(tiptf.velocity_(), addr);
 }
 
 
 void Foam::prescribedVelocityFvPatchVectorField::write(Ostream& os) const
 {
     solidFluxFvPatchVectorField::write(os);
-    velocity_.writeEntry("velocity", os);
+    velocity_->writeData(os);
 }
 
 

@@ -8,6 +8,8 @@ License
 #include "rigidWallFvPatchVectorField.H"
 #include "addToRunTimeSelectionTable.H"
 #include "Time.H"
+#include "Constant.H"
+#include "TableBase.H"
 
 // * * * * * * * * * * * * * * * Local Constants * * * * * * * * * * * * * * //
 
@@ -38,6 +40,77 @@ Foam::vector Foam::rigidWallFvPatchVectorField::readNormal
     }
 
     return n/mag(n);
+}
+
+
+Foam::autoPtr<Foam::Function1<Foam::vector>>
+Foam::rigidWallFvPatchVectorField::readVelocity
+(
+    const fvPatch& p,
+    const dictionary& dict
+)
+{
+    if (!dict.found("velocity", keyType::LITERAL))
+    {
+        return autoPtr<Function1<vector>>
+        (
+            new Function1Types::Constant<vector>("velocity", Zero)
+        );
+    }
+
+    autoPtr<Function1<vector>> velocity
+    (
+        Function1<vector>::New("velocity", dict)
+    );
+
+    // The wall's position is the integral of its velocity: the forms that
+    // integrate exactly
+    const wordList integrable
+    ({
+        "constant", "uniform", "zero", "one", "polynomial", "table",
+        "tableFile", "csvFile"
+    });
+
+    if (!integrable.found(velocity->type()))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'velocity' of patch " << p.name() << " in "
+            << dict.name() << " is a '" << velocity->type() << "', whose"
+            << " integral (the wall's position) OpenFOAM does not give" << nl
+            << "Valid velocity types for a rigid wall: " << integrable << nl
+            << exit(FatalIOError);
+    }
+
+    // A table is integrated here row by row (wallDisplacement), which is
+    // exact for the linear interpolation between its rows and the values
+    // held outside them, not for a repeated table or another scheme
+    if (isA<Function1Types::TableBase<vector>>(velocity()))
+    {
+        const dictionary& coeffs = dict.optionalSubDict("velocityCoeffs");
+        const word bounding
+        (
+            coeffs.getOrDefault<word>("outOfBounds", "clamp")
+        );
+        const word scheme
+        (
+            coeffs.getOrDefault<word>("interpolationScheme", "linear")
+        );
+
+        if (bounding == "repeat" || scheme != "linear")
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'velocity' of patch " << p.name() << " in "
+                << dict.name() << ": a rigid wall's velocity table is"
+                << " integrated for its position with linear interpolation"
+                << " and the end values held outside it" << nl
+                << "Valid: outOfBounds (clamp warn error), interpolationScheme"
+                << " linear; found outOfBounds " << bounding
+                << ", interpolationScheme " << scheme << nl
+                << exit(FatalIOError);
+        }
+    }
+
+    return velocity;
 }
 
 
@@ -84,17 +157,63 @@ Foam::boolList Foam::rigidWallFvPatchVectorField::toBool
 }
 
 
-Foam::scalar Foam::rigidWallFvPatchVectorField::stageTime
+Foam::vector Foam::rigidWallFvPatchVectorField::wallDisplacement
 (
-    const label stage
+    const scalar t
 ) const
 {
-    // touchFoam advances the time before the step's stages: stage 1 works
-    // on the state of the step's start, the others on states at its end
-    // (RK2; see the header for RK3)
-    const Time& time = db().time();
+    const auto* table =
+        isA<Function1Types::TableBase<vector>>(velocity_());
 
-    return stage == 1 ? time.value() - time.deltaTValue() : time.value();
+    if (!table)
+    {
+        return velocity_->integrate(0, t);
+    }
+
+    // v1912's TableBase::integrate fails for the integrals a wall needs:
+    // from the table's first row (integrate(0, t) with a row at 0 and
+    // t <= 0 writes past its index list: the run aborted in free()) and
+    // beyond its last row ("Integrating outside table").  The table is
+    // linear between its rows and held outside them: the trapezoidal rule
+    // over the rows inside (0, t) is exact
+    const scalarField rows(table->x());
+
+    vector sum(Zero);
+    scalar a = 0;
+    vector va(velocity_->value(a));
+
+    for (const scalar b : rows)
+    {
+        if (b <= a)
+        {
+            continue;
+        }
+        if (b >= t)
+        {
+            break;
+        }
+
+        const vector vb(velocity_->value(b));
+        sum += (0.5*(b - a))*(va + vb);
+        a = b;
+        va = vb;
+    }
+
+    if (t > a)
+    {
+        sum += (0.5*(t - a))*(va + velocity_->value(t));
+    }
+
+    return sum;
+}
+
+
+Foam::vector Foam::rigidWallFvPatchVectorField::wallPoint
+(
+    const scalar t
+) const
+{
+    return point_ + wallDisplacement(t);
 }
 
 
@@ -105,7 +224,7 @@ void Foam::rigidWallFvPatchVectorField::checkSide() const
         return;
     }
 
-    const vector wallPoint(point_ + velocity_*db().time().value());
+    const vector wallPoint(this->wallPoint(db().time().value()));
     const scalarField gap((patch().Cf() - wallPoint) & normal_);
     const scalar tolerance =
         touchingTolerance*gMax(sqrt(patch().magSf()));
@@ -134,7 +253,7 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     solidFluxFvPatchVectorField(p, iF),
     point_(Zero),
     normal_(Zero),
-    velocity_(Zero),
+    velocity_(new Function1Types::Constant<vector>("velocity", Zero)),
     contact_(p.size(), false),
     stepContact_(contact_),
     stepForce_(Zero),
@@ -152,11 +271,12 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
 :
     solidFluxFvPatchVectorField
     (
-        p, iF, dict, wordList({"point", "normal", "velocity", "contact"})
+        p, iF, dict,
+        wordList({"point", "normal", "velocity", "velocityCoeffs", "contact"})
     ),
     point_(dict.get<vector>("point")),
     normal_(readNormal(p, dict)),
-    velocity_(dict.getOrDefault<vector>("velocity", Zero)),
+    velocity_(readVelocity(p, dict)),
     contact_(readContact(p, dict)),
     stepContact_(contact_),
     stepForce_(Zero),
@@ -178,12 +298,29 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     solidFluxFvPatchVectorField(ptf, p, iF, mapper),
     point_(ptf.point_),
     normal_(ptf.normal_),
-    velocity_(ptf.velocity_),
+    velocity_(ptf.velocity_.clone()),
     contact_(toBool(scalarField(toScalar(ptf.contact_), mapper))),
     stepContact_(contact_),
     stepForce_(Zero),
     nStages_(0),
     stageForce_(Zero)
+{}
+
+
+Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
+(
+    const rigidWallFvPatchVectorField& ptf
+)
+:
+    solidFluxFvPatchVectorField(ptf),
+    point_(ptf.point_),
+    normal_(ptf.normal_),
+    velocity_(ptf.velocity_.clone()),
+    contact_(ptf.contact_),
+    stepContact_(ptf.stepContact_),
+    stepForce_(ptf.stepForce_),
+    nStages_(ptf.nStages_),
+    stageForce_(ptf.stageForce_)
 {}
 
 
@@ -196,7 +333,7 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     solidFluxFvPatchVectorField(ptf, iF),
     point_(ptf.point_),
     normal_(ptf.normal_),
-    velocity_(ptf.velocity_),
+    velocity_(ptf.velocity_.clone()),
     contact_(ptf.contact_),
     stepContact_(ptf.stepContact_),
     stepForce_(ptf.stepForce_),
@@ -233,8 +370,8 @@ void Foam::rigidWallFvPatchVectorField::updateActiveSet
     const interiorState& s
 )
 {
-    const vector wallPoint(point_ + velocity_*stageTime(s.stage));
-    const scalar wallNormalSpeed = velocity_ & normal_;
+    const vector wallPoint(this->wallPoint(s.time));
+    const scalar wallNormalSpeed = velocity_->value(s.time) & normal_;
     const scalarField& magSf = patch().magSf();
 
     if (s.stage == 1)
@@ -299,7 +436,7 @@ void Foam::rigidWallFvPatchVectorField::flux
     tractionFlux(s, vectorField(pC.size(), Zero), pC, tC);
 
     const tensor nn(sqr(normal_));
-    const vector wallMomentum(s.rho*velocity_);
+    const vector wallMomentum(s.rho*velocity_->value(s.time));
 
     forAll(contact_, facei)
     {
@@ -317,13 +454,13 @@ void Foam::rigidWallFvPatchVectorField::flux
 
 void Foam::rigidWallFvPatchVectorField::constraint
 (
-    const interiorState&,
+    const interiorState& s,
     tensorField& free,
     vectorField& velocity
 ) const
 {
     const tensor nn(sqr(normal_));
-    const vector wallNormalVelocity(nn & velocity_);
+    const vector wallNormalVelocity(nn & velocity_->value(s.time));
 
     forAll(contact_, facei)
     {
@@ -375,7 +512,7 @@ void Foam::rigidWallFvPatchVectorField::write(Ostream& os) const
     solidFluxFvPatchVectorField::write(os);
     os.writeEntry("point", point_);
     os.writeEntry("normal", normal_);
-    os.writeEntry("velocity", velocity_);
+    velocity_->writeData(os);
     toScalar(contact_).writeEntry("contact", os);
 }
 

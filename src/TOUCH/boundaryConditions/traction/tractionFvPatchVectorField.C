@@ -7,6 +7,33 @@ License
 
 #include "tractionFvPatchVectorField.H"
 #include "addToRunTimeSelectionTable.H"
+#include "ConstantField.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class Type>
+Foam::autoPtr<Foam::PatchFunction1<Type>>
+Foam::tractionFvPatchVectorField::readOrZero
+(
+    const fvPatch& p,
+    const word& entryName,
+    const dictionary& dict
+)
+{
+    if (dict.found(entryName, keyType::LITERAL))
+    {
+        return PatchFunction1<Type>::New(p.patch(), entryName, dict);
+    }
+
+    return autoPtr<PatchFunction1<Type>>
+    (
+        new PatchFunction1Types::ConstantField<Type>
+        (
+            p.patch(), entryName, true, Zero, Field<Type>(p.size(), Zero)
+        )
+    );
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -17,8 +44,8 @@ Foam::tractionFvPatchVectorField::tractionFvPatchVectorField
 )
 :
     solidFluxFvPatchVectorField(p, iF),
-    traction_(p.size(), Zero),
-    pressure_(p.size(), Zero)
+    traction_(readOrZero<vector>(p, "traction", dictionary::null)),
+    pressure_(readOrZero<scalar>(p, "pressure", dictionary::null))
 {}
 
 
@@ -29,19 +56,16 @@ Foam::tractionFvPatchVectorField::tractionFvPatchVectorField
     const dictionary& dict
 )
 :
-    solidFluxFvPatchVectorField(p, iF, dict, wordList({"traction", "pressure"})),
-    traction_
+    solidFluxFvPatchVectorField
     (
-        dict.found("traction")
-      ? vectorField("traction", dict, p.size())
-      : vectorField(p.size(), Zero)
+        p, iF, dict,
+        wordList
+        ({
+            "traction", "tractionCoeffs", "pressure", "pressureCoeffs"
+        })
     ),
-    pressure_
-    (
-        dict.found("pressure")
-      ? scalarField("pressure", dict, p.size())
-      : scalarField(p.size(), Zero)
-    )
+    traction_(readOrZero<vector>(p, "traction", dict)),
+    pressure_(readOrZero<scalar>(p, "pressure", dict))
 {}
 
 
@@ -54,9 +78,12 @@ Foam::tractionFvPatchVectorField::tractionFvPatchVectorField
 )
 :
     solidFluxFvPatchVectorField(ptf, p, iF, mapper),
-    traction_(ptf.traction_, mapper),
-    pressure_(ptf.pressure_, mapper)
-{}
+    traction_(ptf.traction_.clone(p.patch())),
+    pressure_(ptf.pressure_.clone(p.patch()))
+{
+    traction_->autoMap(mapper);
+    pressure_->autoMap(mapper);
+}
 
 
 Foam::tractionFvPatchVectorField::tractionFvPatchVectorField
@@ -66,8 +93,19 @@ Foam::tractionFvPatchVectorField::tractionFvPatchVectorField
 )
 :
     solidFluxFvPatchVectorField(ptf, iF),
-    traction_(ptf.traction_),
-    pressure_(ptf.pressure_)
+    traction_(ptf.traction_.clone(this->patch().patch())),
+    pressure_(ptf.pressure_.clone(this->patch().patch()))
+{}
+
+
+Foam::tractionFvPatchVectorField::tractionFvPatchVectorField
+(
+    const tractionFvPatchVectorField& ptf
+)
+:
+    solidFluxFvPatchVectorField(ptf),
+    traction_(ptf.traction_.clone(this->patch().patch())),
+    pressure_(ptf.pressure_.clone(this->patch().patch()))
 {}
 
 
@@ -80,7 +118,13 @@ void Foam::tractionFvPatchVectorField::flux
     vectorField& tC
 ) const
 {
-    tractionFlux(s, traction_ - pressure_*s.n, pC, tC);
+    tractionFlux
+    (
+        s,
+        traction_->value(s.time) - pressure_->value(s.time)*s.n,
+        pC,
+        tC
+    );
 }
 
 
@@ -99,8 +143,8 @@ void Foam::tractionFvPatchVectorField::constraint
 void Foam::tractionFvPatchVectorField::autoMap(const fvPatchFieldMapper& m)
 {
     solidFluxFvPatchVectorField::autoMap(m);
-    traction_.autoMap(m);
-    pressure_.autoMap(m);
+    traction_->autoMap(m);
+    pressure_->autoMap(m);
 }
 
 
@@ -114,16 +158,16 @@ void Foam::tractionFvPatchVectorField::rmap
 
     const tractionFvPatchVectorField& tiptf = refCast<const tractionFvPatchVectorField>(ptf);
 
-    traction_.rmap(tiptf.traction_, addr);
-    pressure_.rmap(tiptf.pressure_, addr);
+    traction_->rmap(tiptf.traction_(), addr);
+    pressure_->rmap(tiptf.pressure_(), addr);
 }
 
 
 void Foam::tractionFvPatchVectorField::write(Ostream& os) const
 {
     solidFluxFvPatchVectorField::write(os);
-    traction_.writeEntry("traction", os);
-    pressure_.writeEntry("pressure", os);
+    traction_->writeData(os);
+    pressure_->writeData(os);
 }
 
 
