@@ -23,8 +23,11 @@ Description
     wrong pairings (symmetricPlane's flux against clamped's constraint, ...)
     must violate it by far.  The rigid wall is set up through the middle
     of each patch with the random face positions x = C_f + (+-0.1) on
-    both sides of it, fixed and moving: both its faces in contact and its
-    separated faces must have been met (it is checked).  A registered condition without a test entry
+    both sides of it, fixed, moving and with a velocity table: both its
+    faces in contact and its separated faces must have been met (it is
+    checked).  The states are taken at random times in [0, 1 ms], the
+    range of the tables (prescribedVelocity, traction, rigidWall) whose
+    values then differ from state to state.  A registered condition without a test entry
     here is tested with 'type <name>;' alone, and fails if that is not
     enough to construct it.
     Exits non-zero on any wrong answer.
@@ -45,6 +48,13 @@ Usage
 #include <functional>
 
 using namespace Foam;
+
+
+//- The states are taken at random times in [0, stageTimeRange] [s], the
+//  range of the tables below (a moving wall moves by less than 1e-3 of
+//  the face positions' spread)
+static const scalar stageTimeRange = 1e-3;
+
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -173,7 +183,8 @@ residuals measure
 
         const solidFluxFvPatchVectorField::interiorState s
         {
-            p, t, n, x, x, rho, Up, Us, rnd.position<label>(1, 3), 0
+            p, t, n, x, x, rho, Up, Us, rnd.position<label>(1, 3),
+            stageTimeRange*rnd.sample01<scalar>()
         };
 
         // The active set first, as the solver does at each stage
@@ -217,15 +228,15 @@ dictionary lmEntry(const string& text)
 
 
 //- A rigid wall through the middle of a patch, its normal into the solid,
-//  moving with the given velocity
-dictionary rigidWallEntry(const fvPatch& patch, const vector& velocity)
+//  moving with the given velocity (the text of a Function1 of time)
+dictionary rigidWallEntry(const fvPatch& patch, const string& velocity)
 {
     const vector normal(-gSum(patch.Sf())/gSum(patch.magSf()));
     const vector point(gSum(patch.Cf()*patch.magSf())/gSum(patch.magSf()));
 
     OStringStream os;
     os  << "type rigidWall; point " << point << "; normal " << normal
-        << "; velocity " << velocity << ";";
+        << "; velocity " << velocity.c_str() << ";";
     return lmEntry(os.str());
 }
 
@@ -378,14 +389,41 @@ int main(int argc, char *argv[])
             "rigidWall", "rigidWall (fixed)",
             [](const fvPatch& patch)
             {
-                return rigidWallEntry(patch, Zero);
+                return rigidWallEntry(patch, "(0 0 0)");
             }
         },
         {
             "rigidWall", "rigidWall (moving)",
             [](const fvPatch& patch)
             {
-                return rigidWallEntry(patch, vector(0.3, -0.7, 1.1));
+                return rigidWallEntry(patch, "(0.3 -0.7 1.1)");
+            }
+        },
+        {
+            "prescribedVelocity", "prescribedVelocity (table)",
+            fixedEntry
+            (
+                "type prescribedVelocity;"
+                " velocity table ((0 (0 0 0)) (1e-3 (1 -2 3)));"
+            )
+        },
+        {
+            "traction", "traction (table)",
+            fixedEntry
+            (
+                "type traction;"
+                " traction table ((0 (0 0 0)) (1e-3 (1e5 -2e4 3e4)));"
+                " pressure table ((0 0) (1e-3 5e4));"
+            )
+        },
+        {
+            "rigidWall", "rigidWall (table)",
+            [](const fvPatch& patch)
+            {
+                return rigidWallEntry
+                (
+                    patch, "table ((0 (0 0 0)) (1e-3 (0.3 -0.7 1.1)))"
+                );
             }
         }
     });
@@ -503,6 +541,7 @@ int main(int argc, char *argv[])
         {"symmetricPlane", "clamped"},
         {"skewSymmetricPlane", "symmetricPlane"},
         {"prescribedVelocity (nonuniform)", "prescribedVelocity (uniform)"},
+        {"prescribedVelocity (table)", "prescribedVelocity (uniform)"},
         {"traction (uniform, pressure)", "clamped"},
         {"rigidWall (moving)", "symmetricPlane"},
         {"traction (free surface)", "rigidWall (moving)"},
