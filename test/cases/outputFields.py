@@ -14,6 +14,9 @@ Asserted at the end:
   values    U = lm/rho (rho of constant/mechanicalProperties) to 1e-15,
             sigmaEq = sqrt(3/2 dev(sigma) && dev(sigma)), pressure =
             -tr(sigma)/3 and J = det F of the written sigma and F to 1e-12;
+            on the patch 'wall', F, P, sigma, sigmaEq, pressure, J and D
+            hold the values of the faces' cells (they held I, 0 and 1
+            before, which ParaView drew as zero stress on the surface);
   yield     the von Mises equivalent of the Kirchhoff stress, J sigmaEq,
             is nowhere above the yield stress of the cell's plastic
             strain, yieldStress + hardeningModulus epsilonP (1e-9), and
@@ -70,19 +73,21 @@ def field(folder, name, n):
     return np.asarray(foamfile.read_field(path).internal(n), float)
 
 
-def patch_values(folder, name, entry, n_faces):
+def patch_values(folder, name, entry, n_faces, ncomp=1):
     """The values of entry ('value', 'contact') of field name's patch
-    WALL: one per face."""
+    WALL: one per face (of ncomp components)."""
     text = foamfile.FoamField(os.path.join(folder, name)) \
         .boundary_patches()[WALL]
-    m = re.search(r"\b%s\s+uniform\s+([^;\s]+)\s*;" % entry, text)
+    m = re.search(r"\b%s\s+uniform\s+([^;]+);" % entry, text)
     if m:
-        return np.full(n_faces, float(m.group(1)))
+        value = foamfile.parse_numbers(m.group(1))
+        return np.tile(value, (n_faces, 1)) if ncomp > 1 \
+            else np.full(n_faces, value[0])
     m = re.search(r"\b%s\s+nonuniform\s+List<\w+>\s*" % entry, text)
     if not m:
         raise AssertionError("%s/%s: no '%s' on patch %s"
                              % (folder, name, entry, WALL))
-    return np.asarray(foamfile.parse_list(text, m.end(), 1)[0], float)
+    return np.asarray(foamfile.parse_list(text, m.end(), ncomp)[0], float)
 
 
 def von_mises(s):
@@ -126,6 +131,21 @@ def check_values(end, case, m, lines, failures):
         if not d <= tol:
             failures.append("%s differs from its definition by %.2e > %g"
                             % (label, d, tol))
+
+    p = m.patch(WALL)
+    owners = m.owner[p["startFace"]:p["startFace"] + p["nFaces"]]
+    stale = []
+    for name, ncomp in (("F", 9), ("P", 9), ("sigma", 6), ("sigmaEq", 1),
+                        ("pressure", 1), ("J", 1), ("D", 3)):
+        cells = field(end, name, n)[owners]
+        if not np.array_equal(patch_values(end, name, "value", p["nFaces"],
+                                           ncomp), cells):
+            stale.append(name)
+    lines.append("on patch %s the cells' values: %s"
+                 % (WALL, "yes" if not stale else "not " + " ".join(stale)))
+    if stale:
+        failures.append("%s on patch %s are not the values of the faces' "
+                        "cells" % (" ".join(stale), WALL))
 
     props = foamfile.read_dict(os.path.join(case, "constant",
                                             "mechanicalProperties"))

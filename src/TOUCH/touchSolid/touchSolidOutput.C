@@ -21,6 +21,34 @@ Description
 #include "calculatedFvPatchFields.H"
 #include "rigidWallFvPatchVectorField.H"
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- The values of a field's cells on its boundary patches (not on coupled
+//  ones, which hold the neighbours').  The solver reads the patches of
+//  processor faces only, so the others kept their initial values (F = I,
+//  P = 0, D = 0): foamToVTK's patches showed zero stress and ParaView
+//  interpolated the cells' values to the boundary points against them
+template<class Type>
+static void cellValuesOnPatches
+(
+    GeometricField<Type, fvPatchField, volMesh>& field
+)
+{
+    for (fvPatchField<Type>& pf : field.boundaryFieldRef())
+    {
+        if (!pf.coupled())
+        {
+            pf = pf.patchInternalField();
+        }
+    }
+}
+
+} // End namespace Foam
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::vector Foam::touchSolid::totalLinearMomentum() const
@@ -161,6 +189,11 @@ void Foam::touchSolid::writeOutputFields()
             *law_, F_.primitiveField(), P_.primitiveFieldRef()
         );
     }
+    // F and D write themselves with the state; J, sigma, sigmaEq and
+    // pressure take their patches from F's and P's
+    cellValuesOnPatches(F_);
+    cellValuesOnPatches(D_);
+    cellValuesOnPatches(P_);
     P_.instance() = timeName;
     P_.write();
 
