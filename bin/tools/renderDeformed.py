@@ -3,7 +3,7 @@
     xvfb-run -a pvbatch renderDeformed.py [time ...]        (in the case)
 
 Reads case.foam with ParaView's OpenFOAM reader, warps the mesh by the point
-displacement pointU and writes deformed_<time>.png for each time asked for
+displacement pointD and writes deformed_<time>.png for each time asked for
 (default: every time written).
 """
 
@@ -21,7 +21,7 @@ times = list(reader.TimestepValues)
 wanted = [float(t) for t in sys.argv[1:]] or times
 
 warp = WarpByVector(Input=reader)
-warp.Vectors = ["POINTS", "pointU"]
+warp.Vectors = ["POINTS", "pointD"]
 
 view = GetActiveViewOrCreate("RenderView")
 view.ViewSize = [700, 1000]

@@ -79,7 +79,7 @@ def body():
     for t in times:
         folder = os.path.join(case, t)
         contact = contact_state(folder, len(wall_faces)) > 0.5
-        u = read_field(os.path.join(folder, "pointU")).internal(len(X))
+        u = read_field(os.path.join(folder, "pointD")).internal(len(X))
         y = X[:, 1] + np.asarray(u)[:, 1]
         points = sorted({p for k, facei in enumerate(wall_faces)
                          if contact[k] for p in mesh.faces[facei]})

@@ -21,7 +21,7 @@ Per case:
              reference (and the serial run);
   restart    a copy of the straight run's set-up and of its folder at the
              restart step (nothing later), run on to the end (startFrom
-             latestTime): lm, F, u, pointU (and epsilonP, CpInv) at the end
+             latestTime): lm, F, D, pointD (and epsilonP, CpInv) at the end
              equal the straight run's bit for bit, and so does the whole
              'wall' entry of lm (the contact active set and the values);
   controls   the restart with the law's state (epsilonP, CpInv) deleted
@@ -35,9 +35,9 @@ Per case:
              processor*/constant/polyMesh/boundary); and with plain metis
              and scotch on 2 and 3 ranks, which cut the long bar across its
              axis and leave the wall on one processor ('metis2plain 8+0').
-             After reconstructPar, every written field (lm v F P sigma
-             pressure J u pointU, and epsilonP CpInv) matches the serial
-             one:
+             After reconstructPar, every written field (lm U F P sigma
+             sigmaEq pressure J D pointD contact, and epsilonP CpInv)
+             matches the serial one:
                  max|q_parallel - q_serial| / max|q_serial| <= 1e-12
              per field; the monitor's contact faces equal the serial ones
              step by step, its momentum, angular momentum, energies and
@@ -76,9 +76,9 @@ CONTACT_COLUMN = "contactFaces(%s)" % WALL
 #: (tutorial, n, steps, restart step, law state fields)
 CASES = [("taylorImpact", 3, 300, 150, ("epsilonP", "CpInv")),
          ("barRebound", 3, 160, 100, ())]
-RESTART_FIELDS = ("lm", "F", "u", "pointU")
-PARALLEL_FIELDS = ("lm", "v", "F", "P", "sigma", "pressure", "J", "u",
-                   "pointU")
+RESTART_FIELDS = ("lm", "F", "D", "pointD")
+PARALLEL_FIELDS = ("lm", "U", "F", "P", "sigma", "sigmaEq", "pressure", "J",
+                   "D", "pointD", "contact")
 #: monitor columns, in groups compared on the group's largest value (L_y
 #: of the quarter bar is round-off, 1e-20, by its symmetry)
 MONITOR_GROUPS = (("px", "py", "pz"), ("Lx", "Ly", "Lz"),
@@ -138,8 +138,8 @@ def field(folder, name, n):
 
 
 def sizes(m):
-    """{field: number of values}: cells, or points for pointU."""
-    return lambda name: m.points.shape[0] if name == "pointU" else m.n_cells
+    """{field: number of values}: cells, or points for pointD."""
+    return lambda name: m.points.shape[0] if name == "pointD" else m.n_cells
 
 
 def prepare(root, tutorial, n, steps, restart_step):

@@ -8,16 +8,16 @@ For swingingCube (8^3), twistingColumn (4 x 24 x 4), spinningCube (6^3) and unst
 writeControl timeStep) in serial, then decomposed with metis on 2 and 4
 ranks (4 > cores: --oversubscribe) and scotch on 2, plus 'simple' (2 1 2)
 for the column so that the clamped base is cut between processors.
-After reconstructPar every written field (lm v F P sigma pressure J u
-pointU) must match the serial one:
+After reconstructPar every written field (lm U F P sigma sigmaEq pressure
+J D pointD) must match the serial one:
 
     max|q_parallel - q_serial| / max(max|q_serial|, floor_q) <= 1e-12
 
 (internal values, all components of a field together).  The floor is the
 size q takes for an O(1) deformation, i.e. the scale at which round-off
 of the state (F ~ 1, positions ~ body size) enters q: 1 for F and J,
-lambda + 2 mu for P, sigma and pressure, U_p for v, rho0 U_p for lm and
-the body size for u and pointU.  Without it, sums taken in another order
+lambda + 2 mu for P, sigma, sigmaEq and pressure, U_p for U, rho0 U_p for
+lm and the body size for D and pointD.  Without it, sums taken in another order
 (the global reductions of the angular momentum correction) make
 last-digit differences in F that small-strain stresses magnify: on the
 swinging cube (|F - I| ~ 3e-4) F agrees to 9e-16 but P only to 1.6e-12
@@ -42,7 +42,8 @@ from touchfoam import (analytic, cases, foamfile, mesh, monitor,  # noqa: E402
 
 NAME = "parallelEqualsSerial"
 TOL = 1e-12
-FIELDS = ["lm", "v", "F", "P", "sigma", "pressure", "J", "u", "pointU"]
+FIELDS = ["lm", "U", "F", "P", "sigma", "sigmaEq", "pressure", "J", "D",
+          "pointD"]
 # (tutorial, n, patch that some decomposition must split)
 CASES = [("swingingCube", 8, "X0"), ("twistingColumn", 4, "base"),
          ("unstructuredCube", 4, "X0"), ("spinningCube", 6, "surface")]
@@ -74,8 +75,8 @@ def floors(case, m):
     Up = analytic.p_wave_speed(mat["E"], mat["nu"], mat["rho"])
     size = float(np.abs(m.points).max())
     return {"F": 1.0, "J": 1.0, "P": lam + 2 * mu, "sigma": lam + 2 * mu,
-            "pressure": lam + 2 * mu, "v": Up, "lm": mat["rho"] * Up,
-            "u": size, "pointU": size}
+            "sigmaEq": lam + 2 * mu, "pressure": lam + 2 * mu, "U": Up,
+            "lm": mat["rho"] * Up, "D": size, "pointD": size}
 
 
 def compare(serial, parallel, m):
@@ -99,7 +100,7 @@ def compare(serial, parallel, m):
         if not os.path.exists(path):
             raise AssertionError("serial run did not write %s/%s"
                                  % (name, field))
-        n = m.points.shape[0] if field == "pointU" else m.n_cells
+        n = m.points.shape[0] if field == "pointD" else m.n_cells
         a = foamfile.read_field(path).internal(n)
         b = foamfile.read_field(os.path.join(pdir, field)).internal(n)
         diffs[field] = (testing.relative_max_difference(b, a, floor[field]),

@@ -283,7 +283,7 @@ def restart(root, n, gap, failures):
             failures.append("restart: %s did not reach %s" % (label, name))
             continue
         diffs = []
-        for field in ("lm", "F", "u"):
+        for field in ("lm", "F", "D"):
             a = foamfile.read_field(os.path.join(end, field)).internal(n)
             b = foamfile.read_field(os.path.join(other, field)).internal(n)
             a, b = np.asarray(a, float), np.asarray(b, float)

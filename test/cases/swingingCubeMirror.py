@@ -54,7 +54,7 @@ def mode_residual(case, t):
     sol = analytic.SwingingCube(E=mat["E"], nu=mat["nu"], rho=mat["rho"])
     mesh = PolyMesh(case)
     X, V = mesh.cell_centres, mesh.cell_volumes
-    v = read_field(os.path.join(run.time_dir(case, t), "v")) \
+    v = read_field(os.path.join(run.time_dir(case, t), "U")) \
         .internal(mesh.n_cells)
     exact = sol.velocity(X, t)
     a = np.sum(V[:, None] * v * exact) / np.sum(V[:, None] * exact ** 2)

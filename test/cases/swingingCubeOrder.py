@@ -29,9 +29,9 @@ NAME = "swingingCubeOrder"
 T_END = 0.004
 # scheme -> {component kind: (min order, max order or None)}
 EXPECTED = {
-    "linear": {"v": (1.6, None), "P": (1.6, None)},
-    "limitedLinear": {"v": (1.6, None), "P": (1.6, None)},
-    "firstOrder": {"v": (0.7, 1.4), "P": (0.7, None)},
+    "linear": {"U": (1.6, None), "P": (1.6, None)},
+    "limitedLinear": {"U": (1.6, None), "P": (1.6, None)},
+    "firstOrder": {"U": (0.7, 1.4), "P": (0.7, None)},
 }
 
 

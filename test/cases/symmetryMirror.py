@@ -16,7 +16,7 @@ interior faces to the cell's reflection.  The default, oneSided, is run
 too and its difference reported (not asserted: it is the known defect the
 option removes).
 
-Asserted: lm, F, epsilonP (cells) and pointU (points), the quarter's
+Asserted: lm, F, epsilonP (cells) and pointD (points), the quarter's
 against the whole bar's at the same reference positions, differ by at most
 1e-10 of each field's largest value.  One-sided, F differs by 2e-5 after
 the first step, and at 80 us the quarter's foot radius is 6.685 mm against
@@ -89,9 +89,9 @@ def differences(quarter, whole):
         b = read_field(os.path.join(tw, field)).internal(mw.n_cells)
         out[field] = testing.relative_max_difference(
             np.asarray(a), np.asarray(b)[cells])
-    a = read_field(os.path.join(tq, "pointU")).internal(len(mq.points))
-    b = read_field(os.path.join(tw, "pointU")).internal(len(mw.points))
-    out["pointU"] = testing.relative_max_difference(
+    a = read_field(os.path.join(tq, "pointD")).internal(len(mq.points))
+    b = read_field(os.path.join(tw, "pointD")).internal(len(mw.points))
+    out["pointD"] = testing.relative_max_difference(
         np.asarray(a), np.asarray(b)[points])
     peak = float(np.asarray(read_field(os.path.join(tq, "epsilonP"))
                             .internal(mq.n_cells)).max())

@@ -1,19 +1,21 @@
 #!/usr/bin/python3
 """Pictures of the Taylor bar at the seed's times (figure 5: 10, 30, 50,
-80 us): pressure and equivalent plastic strain on the deformed quarter,
-seen from the side of its cut planes.  Run in the case by Allrun:
+80 us): pressure, von Mises stress and equivalent plastic strain on the
+quarter warped by pointD, seen from the side of its cut planes.  Run in
+the case by Allrun:
 
     xvfb-run -a pvbatch render.py
 
-Writes pressure_<t>us.png and epsilonP_<t>us.png.
+Writes pressure_<t>us.png, sigmaEq_<t>us.png and epsilonP_<t>us.png.
 """
 
 # The touchfoam package: bin/python, on PYTHONPATH after etc/bashrc
 from touchfoam.figures import render_deformed
 
 render_deformed(
-    fields=["pressure", "epsilonP"],
+    fields=["pressure", "sigmaEq", "epsilonP"],
     titles={"pressure": "pressure [Pa]",
+            "sigmaEq": "von Mises stress [Pa]",
             "epsilonP": "equivalent plastic strain"},
     times=[1e-5, 3e-5, 5e-5, 8e-5],
     time_unit="us",

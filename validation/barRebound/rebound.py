@@ -27,7 +27,7 @@ the faces in contact at some Runge-Kutta stage of the step):
                bar moves away), and the height of the lowest point of the
                bar above the wall at the last written time.
 
-End displacements (seed figure 7): u_y from pointU in the time folders at
+End displacements (seed figure 7): u_y from pointD in the time folders at
 two fixed point labels, the mesh points at the centre of the top face
 (0, gap + L, 0) and of the bottom face (0, gap, 0) (both on the axis of
 the quarter model; the labels and their distance to those positions are
@@ -97,7 +97,7 @@ def run_case(n, write):
 
 def probe_histories(case, mesh):
     """{name: {label, offset, t, uy}}: u_y of the mesh points at PROBES
-    from pointU of every written time (0 at a time without pointU)."""
+    from pointD of every written time (0 at a time without pointD)."""
     times = run.time_dirs(case)
     out = {}
     for name, X in PROBES.items():
@@ -105,7 +105,7 @@ def probe_histories(case, mesh):
         out[name] = {"position": list(X), "label": int(d.argmin()),
                      "offset": float(d.min()), "t": [], "uy": []}
     for t in sorted(times):
-        path = os.path.join(case, times[t], "pointU")
+        path = os.path.join(case, times[t], "pointD")
         u = read_field(path).internal(len(mesh.points)) \
             if os.path.exists(path) else None
         for probe in out.values():
@@ -128,7 +128,7 @@ def contact_intervals(t, faces):
 def lowest_point(case, mesh):
     """(time, min current y of the mesh points) at the last written time."""
     folder = run.latest_time_dir(case)
-    u = read_field(os.path.join(folder, "pointU")).internal(len(mesh.points))
+    u = read_field(os.path.join(folder, "pointD")).internal(len(mesh.points))
     return float(os.path.basename(folder)), float((mesh.points + u)[:, 1]
                                                   .min())
 
@@ -263,7 +263,7 @@ def write_markdown(out, path):
     lines += [
         "", "End displacements (displacement.png): u_y of the mesh points "
         "at the centre of the top face (0, gap + L, 0) and of the bottom "
-        "face (0, gap, 0), from pointU at the written times; largest "
+        "face (0, gap, 0), from pointD at the written times; largest "
         "difference between the meshes at the common times, relative to "
         "the largest |u_y| of the finer mesh: top %.1f %%, bottom %.1f %%."
         % (100 * a["topDisplacement"], 100 * a["bottomDisplacement"]),

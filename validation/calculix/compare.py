@@ -280,7 +280,7 @@ def top_twist(X, u, reference_deg, rmin=RMIN):
 
 def touch_top(folder, t):
     m = PolyMesh(folder)
-    u = read_field(os.path.join(run.time_dir(folder, t), "pointU")
+    u = read_field(os.path.join(run.time_dir(folder, t), "pointD")
                    ).internal(len(m.points))
     return m.points, u
 

@@ -107,14 +107,14 @@ STAGE = [
     ("touchSolid::computeRates: lmRate /= V, FRate /= V",
      [("V (twice)", "cell", 16, "r"), ("lmRate", "cell", "vector", "rw"),
       ("FRate", "cell", "tensor", "rw")]),
-    ("touchSolid::advanceStage: u",
-     [("u0, lm", "cell", 48, "r"), ("u", "cell", "vector", "rw")]),
+    ("touchSolid::advanceStage: D",
+     [("D0, lm", "cell", 48, "r"), ("D", "cell", "vector", "rw")]),
     ("touchSolid::advanceStage: lm, F",
      [("lm0, lmRate, F0, FRate", "cell", 24 + 24 + 72 + 72, "r"),
       ("lm, F", "cell", 96, "rw")]),
-    ("touchSolid::advanceStage: pointU",
-     [("pointU0, pointV", "point", 48, "r"),
-      ("pointU", "point", "vector", "rw")]),
+    ("touchSolid::advanceStage: pointD",
+     [("pointD0, pointV", "point", 48, "r"),
+      ("pointD", "point", "vector", "rw")]),
     ("touchSolid::valid",
      [("F, lm", "cell", 96, "r")]),
 ]
@@ -124,9 +124,9 @@ STEP = [
     ("stableTimeStep::deltaT",
      [("F", "cell", "tensor", "r"), ("hCell", "cell", "scalar", "r")]),
     ("touchSolid::storeOldTime",
-     [("lm, F, u", "cell", 120, "r"), ("lm0, F0, u0", "cell", 120, "w"),
-      ("pointU", "point", "vector", "r"),
-      ("pointU0", "point", "vector", "w")]),
+     [("lm, F, D", "cell", 120, "r"), ("lm0, F0, D0", "cell", 120, "w"),
+      ("pointD", "point", "vector", "r"),
+      ("pointD0", "point", "vector", "w")]),
 ]
 
 #: The solidMonitor's totals, every step in the baseline

@@ -53,7 +53,7 @@ def analyse(case, n):
     sol = analytic.SwingingCube(E=mat["E"], nu=mat["nu"], rho=mat["rho"])
     mesh = PolyMesh(case)
     X, V = mesh.cell_centres, mesh.cell_volumes
-    v = read_field(os.path.join(time_dir(case, T_END), "v")) \
+    v = read_field(os.path.join(time_dir(case, T_END), "U")) \
         .internal(mesh.n_cells)[:, 0]
     exact = sol.velocity(X, T_END)[:, 0]
     a = np.sum(V * v * exact) / np.sum(V * exact ** 2)

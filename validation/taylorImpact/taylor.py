@@ -221,7 +221,7 @@ def at_time(cells, folder):
     """Length, foot radius, peak strain, J range and the checker-board
     indices of pressure and epsilonP at one written time."""
     m = cells.mesh
-    x = m.points + cells.read(folder, "pointU", points=True)
+    x = m.points + cells.read(folder, "pointD", points=True)
     eps = cells.read(folder, "epsilonP")
     J = cells.read(folder, "J")
     return {

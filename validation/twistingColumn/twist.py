@@ -10,7 +10,7 @@ writing every 0.01 s, and reports
   (a) energy: max over successive solidMonitor samples of
       (E_{n+1} - E_n) / E_0, E_0 = sum V |p|^2 / (2 rho0) of 0/lm; the
       total energy must never grow: pass when <= 1e-10;
-  (b) twist: mean rotation about +Y of the top-face points (pointU, points
+  (b) twist: mean rotation about +Y of the top-face points (pointD, points
       at least 0.25 from the axis) at t = 0.1 s, unwrapped through the
       0.01 s writes; pass when the values for the two nu differ by less
       than 10 % of the larger (a locking scheme twists less as nu -> 0.5).

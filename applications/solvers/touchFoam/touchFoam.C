@@ -19,7 +19,9 @@ Description
 
     Reads 0/lm (linear momentum, with the boundary conditions), optionally
     0/F, constant/mechanicalProperties and the TOUCH entries of
-    system/fvSolution.  Writes lm, v, F, P, sigma, pressure, J, u and pointU.
+    system/fvSolution.  Writes the state lm, F, D (cell displacement) and
+    pointD (point displacement), and U, P, sigma, sigmaEq, pressure, J and,
+    with a rigidWall patch, contact (touchSolid).
 
     A run that produces an inverted cell or a non-finite value stops with a
     message naming the cell, its position and the time, after writing the

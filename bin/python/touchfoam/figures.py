@@ -4,7 +4,7 @@ ringImpact, torusImpact).
 Pictures, in ParaView's pvbatch (the tutorials' render.py, run in the case
 as 'xvfb-run -a pvbatch render.py'):
 
-    render_deformed   the deformed shape (the mesh warped by pointU) coloured
+    render_deformed   the deformed shape (the mesh warped by pointD) coloured
                       by cell fields, one PNG per field and time, with the
                       rigid wall drawn and one colour range per field for
                       all the times: the 1st to 99th percentile of the
@@ -94,12 +94,12 @@ def render_deformed(fields, times, time_unit, view, up=(0, 1, 0),
     if not shown:
         return []
     reader.CellArrays = shown
-    reader.PointArrays = ["pointU"]
+    reader.PointArrays = ["pointD"]
     written = list(reader.TimestepValues)
     chosen = [min(written, key=lambda w: abs(w - t)) for t in times]
 
     body = pv.WarpByVector(Input=reader)
-    body.Vectors = ["POINTS", "pointU"]
+    body.Vectors = ["POINTS", "pointD"]
 
     view_ = pv.CreateView("RenderView")
     view_.ViewSize = list(size)
@@ -194,7 +194,7 @@ def _written(case):
 def point_history(case, X0):
     """Displacement of the mesh points nearest to the reference points X0
     at the written times: (times, u), u of shape (times, points, 3); a time
-    without pointU (the initial one) counts as undeformed."""
+    without pointD (the initial one) counts as undeformed."""
     m = PolyMesh(case)
     X0 = np.atleast_2d(np.asarray(X0, float))
     nearest = [int(np.argmin(np.sum((m.points - x) ** 2, axis=1)))
@@ -202,7 +202,7 @@ def point_history(case, X0):
     times, names = _written(case)
     u = []
     for name in names:
-        path = os.path.join(case, name, "pointU")
+        path = os.path.join(case, name, "pointD")
         if os.path.exists(path) or os.path.exists(path + ".gz"):
             u.append(read_field(path).internal(len(m.points))[nearest])
         else:
@@ -211,13 +211,13 @@ def point_history(case, X0):
 
 
 def point_positions(case):
-    """(times, mesh, positions): the current point positions X + pointU
-    at each written time (X at a time without pointU)."""
+    """(times, mesh, positions): the current point positions X + pointD
+    at each written time (X at a time without pointD)."""
     m = PolyMesh(case)
     times, names = _written(case)
     positions = []
     for name in names:
-        path = os.path.join(case, name, "pointU")
+        path = os.path.join(case, name, "pointD")
         if os.path.exists(path) or os.path.exists(path + ".gz"):
             positions.append(m.points + read_field(path).internal(
                 len(m.points)))

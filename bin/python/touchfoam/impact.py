@@ -114,7 +114,7 @@ def impact_metrics(case, t, v0=V0, gap=4):
     X = m.cell_centres
     tdir = time_dir(case, t)
     sigma = read_field(os.path.join(tdir, "sigma")).internal(m.n_cells)
-    v = read_field(os.path.join(tdir, "v")).internal(m.n_cells)
+    v = read_field(os.path.join(tdir, "U")).internal(m.n_cells)
     x = X[:, 0]
     h = float(np.cbrt(m.cell_volumes.mean()))
     out = front_metrics(x, sigma[:, 0], sol.front(t), sol.jump, h, gap)

@@ -28,7 +28,7 @@ NORM = ("e_L2(q) = sqrt(sum_e V_e (q_e - q_exact(X_e, t))^2), q_e the cell "
 
 #: component name -> (field, index into the flattened values)
 SWINGING_COMPONENTS = {
-    "vx": ("v", 0), "vy": ("v", 1), "vz": ("v", 2),
+    "vx": ("U", 0), "vy": ("U", 1), "vz": ("U", 2),
     "Pxx": ("P", 0), "Pyy": ("P", 4), "Pzz": ("P", 8),
 }
 
@@ -42,11 +42,11 @@ def swinging_cube_errors(case, t=0.004, U0=None):
     m = PolyMesh(case)
     X, V = m.cell_centres, m.cell_volumes
     tdir = time_dir(case, t)
-    exact = {"v": sol.velocity(X, t),
+    exact = {"U": sol.velocity(X, t),
              "P": analytic.flatten_tensor(sol.stress(X, t))}
-    amplitude = {"v": sol.velocity_amplitude(), "P": sol.stress_amplitude()}
+    amplitude = {"U": sol.velocity_amplitude(), "P": sol.stress_amplitude()}
     values = {f: read_field(os.path.join(tdir, f)).internal(m.n_cells)
-              for f in ("v", "P")}
+              for f in ("U", "P")}
     out = {}
     for comp, (field, i) in SWINGING_COMPONENTS.items():
         q, qe = values[field][:, i], exact[field][:, i]
@@ -91,7 +91,7 @@ def energy_increase(case, reference=None):
 
 
 def column_twist(case, t_end=None, top=6.0, rmin=0.25, tol=1e-9):
-    """[(t, mean twist angle)] of the column's top face, from pointU.
+    """[(t, mean twist angle)] of the column's top face, from pointD.
 
     The twist of a point is its rotation about +Y in the XZ plane
     (analytic.twist_angle); points closer than rmin to the axis are left
@@ -112,7 +112,7 @@ def column_twist(case, t_end=None, top=6.0, rmin=0.25, tol=1e-9):
     history = [(0.0, 0.0)]
     previous = np.zeros(len(top_pts))
     for t in times:
-        path = os.path.join(time_dir(case, t), "pointU")
+        path = os.path.join(time_dir(case, t), "pointD")
         u = read_field(path).internal(len(X))[top_pts]
         theta = analytic.twist_angle(X[top_pts], u)
         # Unwrap: the branch nearest the previous angle

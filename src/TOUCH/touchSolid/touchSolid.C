@@ -123,10 +123,59 @@ Foam::scalarList Foam::touchSolid::mirrorPatches
 
 Foam::tmp<Foam::vectorField> Foam::touchSolid::cellPositions
 (
-    const vectorField& u
+    const vectorField& D
 ) const
 {
-    return mesh_.C().primitiveField() + u;
+    return mesh_.C().primitiveField() + D;
+}
+
+
+template<class GeoField>
+Foam::tmp<GeoField> Foam::touchSolid::readDisplacement
+(
+    const typename GeoField::Mesh& mesh,
+    const word& name,
+    const word& oldName
+)
+{
+    const objectRegistry& db = mesh.thisDb();
+
+    // Not registered: the state's own field takes the name
+    IOobject io
+    (
+        name, db.time().timeName(), db,
+        IOobject::MUST_READ, IOobject::NO_WRITE, false
+    );
+
+    if (!io.typeHeaderOk<GeoField>(true))
+    {
+        IOobject oldIo
+        (
+            oldName, db.time().timeName(), db,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        );
+
+        if (!oldIo.typeHeaderOk<GeoField>(true))
+        {
+            io.readOpt() = IOobject::NO_READ;
+            return tmp<GeoField>::New
+            (
+                io,
+                mesh,
+                dimensionedVector("0", dimLength, Zero),
+                GeoField::Patch::calculatedType()
+            );
+        }
+
+        Info<< "touchSolid: no " << name << " at time "
+            << db.time().timeName() << ": the displacement is read from "
+            << oldName << ", its former name, and written as " << name
+            << endl;
+
+        io = oldIo;
+    }
+
+    return tmp<GeoField>::New(io, mesh);
 }
 
 
@@ -139,7 +188,7 @@ void Foam::touchSolid::computeRates(const label stage)
     if (preserveAngularMomentum_)
     {
         // The cell positions across processor faces (the rigid spin)
-        u_.correctBoundaryConditions();
+        D_.correctBoundaryConditions();
     }
     law_->correct(F_, P_);
     if (nodalAveraging_)
@@ -165,9 +214,9 @@ void Foam::touchSolid::computeRates(const label stage)
         (
             angularMomentum_.spin
             (
-                cellPositions(u_.primitiveField()), lm_.primitiveField()
+                cellPositions(D_.primitiveField()), lm_.primitiveField()
             ),
-            pointU_.primitiveField()
+            pointD_.primitiveField()
         );
     }
 
@@ -258,19 +307,18 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
         dimensionedTensor("I", dimless, tensor::I),
         calculatedFvPatchTensorField::typeName
     ),
-    u_
+    D_
     (
-        fieldIO(mesh, "u", IOobject::READ_IF_PRESENT, IOobject::AUTO_WRITE),
-        mesh,
-        dimensionedVector("0", dimLength, Zero),
-        calculatedFvPatchVectorField::typeName
+        fieldIO(mesh, "D", IOobject::NO_READ, IOobject::AUTO_WRITE),
+        readDisplacement<volVectorField>(mesh, "D", "u")
     ),
-    pointU_
+    pointD_
     (
-        fieldIO(mesh, "pointU", IOobject::READ_IF_PRESENT, IOobject::AUTO_WRITE),
-        pointMesh::New(mesh),
-        dimensionedVector("0", dimLength, Zero),
-        calculatedPointPatchVectorField::typeName
+        fieldIO(mesh, "pointD", IOobject::NO_READ, IOobject::AUTO_WRITE),
+        readDisplacement<pointVectorField>
+        (
+            pointMesh::New(mesh), "pointD", "pointU"
+        )
     ),
     P_
     (
@@ -288,7 +336,7 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     ),
     mirrorPlanes_(readMirrorPlanes(controls_)),
     reconstruction_(mesh, controls_, mirrorPatches(lm_, mirrorPlanes_)),
-    faces_(mesh, reconstruction_, lm_, F_, P_, u_, pointU_),
+    faces_(mesh, reconstruction_, lm_, F_, P_, D_, pointD_),
     update_
     (
         deformationUpdate::New(controls_, faces_, *law_, *riemann_, reconstruction_)
@@ -296,8 +344,8 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     timeStep_(controls_, faces_, *law_),
     lm0_(mesh.nCells()),
     F0_(mesh.nCells()),
-    u0_(mesh.nCells()),
-    pointU0_(mesh.nPoints()),
+    D0_(mesh.nCells()),
+    pointD0_(mesh.nPoints()),
     lmRate_(mesh.nCells()),
     FRate_(mesh.nCells()),
     inverseVolumes_(1/mesh.V().field()),
@@ -348,7 +396,7 @@ bool Foam::touchSolid::advance(const scalar dt)
             if (celli >= 0)
             {
                 Pout<< "touchSolid: cell " << celli << " at "
-                    << mesh_.C()[celli] + u_[celli] << " (reference "
+                    << mesh_.C()[celli] + D_[celli] << " (reference "
                     << mesh_.C()[celli] << "): det F = " << det(F_[celli])
                     << ", |lm| = " << mag(lm_[celli]) << endl;
             }
@@ -368,13 +416,13 @@ void Foam::touchSolid::storeOldTime()
 {
     lm0_ = lm_.primitiveField();
     F0_ = F_.primitiveField();
-    u0_ = u_.primitiveField();
-    pointU0_ = pointU_.primitiveField();
+    D0_ = D_.primitiveField();
+    pointD0_ = pointD_.primitiveField();
     law_->storeOldTime();
 
     if (preserveAngularMomentum_)
     {
-        L0_ = angularMomentum_.total(cellPositions(u0_), lm0_);
+        L0_ = angularMomentum_.total(cellPositions(D0_), lm0_);
         Lstage_ = L0_;
         E0_ = kineticEnergy() + strainEnergy();
         Estage_ = E0_;
@@ -394,27 +442,27 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
 
     vectorField& lm = lm_.primitiveFieldRef();
     tensorField& F = F_.primitiveFieldRef();
-    vectorField& u = u_.primitiveFieldRef();
-    vectorField& pointU = pointU_.primitiveFieldRef();
+    vectorField& D = D_.primitiveFieldRef();
+    vectorField& pointD = pointD_.primitiveFieldRef();
     const vectorField& pointV = pointV_.primitiveField();
 
     // The rates are the cells' totals: 1/V is applied here, in the pass
-    // that uses them, rather than in passes of their own. u advances with
+    // that uses them, rather than in passes of their own. D advances with
     // the stage momentum, so before lm
     const scalarField& invV = inverseVolumes_;
     const scalar dtByRho = dt/rho;
 
     forAll(F, celli)
     {
-        u[celli] = alpha*u0_[celli] + beta*(u[celli] + dtByRho*lm[celli]);
+        D[celli] = alpha*D0_[celli] + beta*(D[celli] + dtByRho*lm[celli]);
         F[celli] =
             alpha*F0_[celli]
           + beta*(F[celli] + (dt*invV[celli])*FRate_[celli]);
     }
-    forAll(pointU, pointi)
+    forAll(pointD, pointi)
     {
-        pointU[pointi] =
-            alpha*pointU0_[pointi] + beta*(pointU[pointi] + dt*pointV[pointi]);
+        pointD[pointi] =
+            alpha*pointD0_[pointi] + beta*(pointD[pointi] + dt*pointV[pointi]);
     }
 
     law_->advanceStage(alpha);
@@ -446,7 +494,7 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
             // may reach
             angularMomentum_.correct
             (
-                cellPositions(u),
+                cellPositions(D),
                 alpha*lm0_ + beta*lm,
                 beta*dt,
                 Lstage_,
@@ -482,8 +530,8 @@ void Foam::touchSolid::restoreOldTime()
 {
     lm_.primitiveFieldRef() = lm0_;
     F_.primitiveFieldRef() = F0_;
-    u_.primitiveFieldRef() = u0_;
-    pointU_.primitiveFieldRef() = pointU0_;
+    D_.primitiveFieldRef() = D0_;
+    pointD_.primitiveFieldRef() = pointD0_;
     law_->restoreOldTime();
 }
 

@@ -9,10 +9,45 @@ Description
     (linear and angular momentum, kinetic and stored energy), the start-up
     summary of the log and the output fields written with each time.
 
+    The output fields have the names OpenFOAM's solvers give them (U the
+    velocity; solidDisplacementFoam's D and sigmaEq; solids4foam's pointD),
+    so that a user finds them in ParaView where expected: U, P, J, sigma,
+    sigmaEq, pressure and, with a rigid wall, contact.  The state (lm, F,
+    D, pointD) writes itself.
+
 \*---------------------------------------------------------------------------*/
 
 #include "touchSolid.H"
 #include "calculatedFvPatchFields.H"
+#include "rigidWallFvPatchVectorField.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- The values of a field's cells on its boundary patches (not on coupled
+//  ones, which hold the neighbours').  The solver reads the patches of
+//  processor faces only, so the others kept their initial values (F = I,
+//  P = 0, D = 0): foamToVTK's patches showed zero stress and ParaView
+//  interpolated the cells' values to the boundary points against them
+template<class Type>
+static void cellValuesOnPatches
+(
+    GeometricField<Type, fvPatchField, volMesh>& field
+)
+{
+    for (fvPatchField<Type>& pf : field.boundaryFieldRef())
+    {
+        if (!pf.coupled())
+        {
+            pf = pf.patchInternalField();
+        }
+    }
+}
+
+} // End namespace Foam
+
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -38,7 +73,7 @@ Foam::vector Foam::touchSolid::totalAngularMomentum(const point& origin) const
         angularMomentum_.total
         (
             mesh_.C().primitiveField(),
-            u_.primitiveField(),
+            D_.primitiveField(),
             lm_.primitiveField()
         )
       - (origin ^ totalLinearMomentum());
@@ -140,7 +175,7 @@ void Foam::touchSolid::writeOutputFields()
     };
 
     // One output field at a time, the stress in P_ itself (the next stage
-    // recomputes it): holding P, v, J, sigma and pressure together set the
+    // recomputes it): holding P, U, J, sigma and pressure together set the
     // run's peak memory, 106 bytes a cell above the time loop's (1.05 M
     // cells, measured)
 
@@ -154,12 +189,18 @@ void Foam::touchSolid::writeOutputFields()
             *law_, F_.primitiveField(), P_.primitiveFieldRef()
         );
     }
+    // F and D write themselves with the state; J, sigma, sigmaEq and
+    // pressure take their patches from F's and P's
+    cellValuesOnPatches(F_);
+    cellValuesOnPatches(D_);
+    cellValuesOnPatches(P_);
     P_.instance() = timeName;
     P_.write();
 
     {
-        volVectorField v(outputIO("v"), lm_/rho);
-        v.write();
+        // lm/rho of the lm written with it, cell by cell and on the patches
+        volVectorField U(outputIO("U"), lm_/rho);
+        U.write();
     }
 
     {
@@ -197,8 +238,75 @@ void Foam::touchSolid::writeOutputFields()
     }
     sigma.write();
 
-    volScalarField pressure(outputIO("pressure"), -tr(sigma)/3);
-    pressure.write();
+    {
+        volScalarField pressure(outputIO("pressure"), -tr(sigma)/3);
+        pressure.write();
+    }
+
+    {
+        volScalarField sigmaEq
+        (
+            outputIO("sigmaEq"),
+            sqrt((3.0/2.0)*magSqr(dev(sigma)))
+        );
+        sigmaEq.write();
+    }
+
+    writeContact(outputIO("contact"));
+}
+
+
+void Foam::touchSolid::writeContact(const IOobject& io) const
+{
+    // The rigid walls' active sets are entries of lm's patches, which
+    // ParaView does not show: as a field, 1 on a face in contact (the
+    // decision of the last stage of the last step) and 0 else, and in the
+    // cells 1 where one of its faces is in contact, so that the internal
+    // mesh shows it too
+    const volVectorField::Boundary& lmBf = lm_.boundaryField();
+
+    bool anyWall = false;
+    forAll(lmBf, patchi)
+    {
+        anyWall = anyWall || isA<rigidWallFvPatchVectorField>(lmBf[patchi]);
+    }
+
+    // The patches are every rank's, so every rank decides alike
+    if (!anyWall)
+    {
+        return;
+    }
+
+    volScalarField contact
+    (
+        io,
+        mesh_,
+        dimensionedScalar("0", dimless, Zero),
+        calculatedFvPatchField<scalar>::typeName
+    );
+
+    forAll(lmBf, patchi)
+    {
+        if (isA<rigidWallFvPatchVectorField>(lmBf[patchi]))
+        {
+            const boolList& inContact =
+                refCast<const rigidWallFvPatchVectorField>(lmBf[patchi])
+               .contact();
+            const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+            fvPatchScalarField& pc = contact.boundaryFieldRef()[patchi];
+
+            forAll(inContact, facei)
+            {
+                if (inContact[facei])
+                {
+                    pc[facei] = 1;
+                    contact[faceCells[facei]] = 1;
+                }
+            }
+        }
+    }
+
+    contact.write();
 }
 
 
