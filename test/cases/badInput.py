@@ -9,9 +9,10 @@ On a 4^3 swinging cube, one mistake at a time:
   - nu = 0.5,
   - a misspelt reconstruction scheme and limiter in system/fvSolution TOUCH,
   - CFL = 1.5,
-  - a boundary condition of lm that is not a solid one (fixedValue),
+  - a boundary condition of the initial velocity 0/U that is not a solid
+    one (fixedValue),
   - a missing TOUCH dictionary entry (riemannSolver),
-  - a misspelt keyword in an entry of 0/lm: 'tracton' in a traction entry
+  - a misspelt keyword in an entry of 0/U: 'tracton' in a traction entry
     (the cube has none: its skewSymmetricPlane patches become one),
     'velocty' in a prescribedVelocity entry and in a symmetricPlane entry;
     the error lists the condition's valid keywords,
@@ -25,7 +26,9 @@ On a 4^3 swinging cube, one mistake at a time:
   - a misspelt nodalAveraging (pressur), and nodalAveraging deformation
     with vonMisesPlastic (a law with state),
   - a misspelt jumpShare (quadratc),
-  - a misspelt symmetricPlanes (mirorr).
+  - a misspelt symmetricPlanes (mirorr),
+  - 0/U with the dimensions of momentum, a 0/lm beside 0/U that disagrees
+    with rho U, and neither 0/U nor 0/lm.
 Each run must exit non-zero, its log must contain every expected word, and
 no time folder may be written.  Every mistake is tried; the failure names
 all that were not refused properly.
@@ -65,40 +68,50 @@ MISTAKES = [
     ("riemannSolver", "system/fvSolution",
      (r"riemannSolver\s+\w+;", ""),
      ["riemannSolver", "fvSolution"]),
-    ("boundary", "0/lm",
+    ("boundary", "0/U",
      (r"type\s+symmetricPlane;", "type fixedValue;"),
-     ["fixedValue", "lm", "symmetricPlane", "traction"]),
-    ("tractionKeyword", "0/lm",
+     ["fixedValue", "0/U", "symmetricPlane", "traction"]),
+    ("tractionKeyword", "0/U",
      (r"type\s+skewSymmetricPlane;",
       "type traction; tracton uniform (1e5 0 0);"),
-     ["tracton", "lm", "traction", "pressure"]),
-    ("prescribedVelocityKeyword", "0/lm",
+     ["tracton", "0/U", "traction", "pressure"]),
+    ("prescribedVelocityKeyword", "0/U",
      (r"type\s+symmetricPlane;",
       "type prescribedVelocity; velocty uniform (0 0 0);"),
-     ["velocty", "lm", "velocity"]),
-    ("velocityFunction1", "0/lm",
+     ["velocty", "0/U", "velocity"]),
+    ("velocityFunction1", "0/U",
      (r"type\s+symmetricPlane;",
       "type prescribedVelocity; velocity tabel ((0 (0 0 0)) (1 (1 0 0)));"),
-     ["tabel", "velocity", "lm", "X0", "table", "tableFile", "sine"]),
-    ("pressureFunction1", "0/lm",
+     ["tabel", "velocity", "0/U", "X0", "table", "tableFile", "sine"]),
+    ("pressureFunction1", "0/U",
      (r"type\s+skewSymmetricPlane;",
       "type traction; pressure sinus; pressureCoeffs { frequency 1; }"),
-     ["sinus", "pressure", "lm", "X1", "table", "sine", "square"]),
-    ("wallFunction1", "0/lm",
+     ["sinus", "pressure", "0/U", "X1", "table", "sine", "square"]),
+    ("wallFunction1", "0/U",
      (r"type\s+symmetricPlane;",
       "type rigidWall; point (0 0 0); normal (1 0 0); "
       "velocity tabel ((0 (0 0 0)) (1 (1 0 0)));"),
-     ["tabel", "velocity", "lm", "X0", "table", "polynomial"]),
-    ("wallVelocityIntegral", "0/lm",
+     ["tabel", "velocity", "0/U", "X0", "table", "polynomial"]),
+    ("wallVelocityIntegral", "0/U",
      (r"type\s+symmetricPlane;",
       "type rigidWall; point (0 0 0); normal (1 0 0); velocity sine; "
       "velocityCoeffs { frequency 1; amplitude 1; scale (1 0 0); "
       "level (0 0 0); }"),
-     ["'sine'", "velocity", "lm", "X0", "constant", "table", "csvFile"]),
-    ("symmetricPlaneKeyword", "0/lm",
+     ["'sine'", "velocity", "0/U", "X0", "constant", "table", "csvFile"]),
+    ("symmetricPlaneKeyword", "0/U",
      (r"type\s+symmetricPlane;",
       "type symmetricPlane; velocty uniform (0 0 0);"),
-     ["velocty", "lm", "patchType"]),
+     ["velocty", "0/U", "patchType"]),
+    ("velocityDimensions", "0/U",
+     (r"dimensions\s+\[0 1 -1 0 0 0 0\];", "dimensions [1 -2 -1 0 0 0 0];"),
+     ["0/U", "[1 -2 -1 0 0 0 0]", "velocity", "[0 1 -1 0 0 0 0]"]),
+    # 0/lm beside 0/U, rho U = 0 but lm = (1 0 0): which is meant?
+    ("momentumAndVelocity", "0/lm",
+     (r"^", "COPY 0/U\n"),
+     ["0/lm", "0/U", "disagree", "Remove one"]),
+    ("noInitialState", "0/U",
+     (r"^", "REMOVE\n"),
+     ["0/U", "0/lm", "neither"]),
     ("FUpdate", "system/fvSolution",
      (r"FUpdate\s+\w+;", "FUpdate compatibel;"),
      ["compatibel", "fvSolution", "compatible", "constrained", "plain"]),
@@ -142,6 +155,21 @@ def check(root, label, path, edit, words):
     edits = edit if isinstance(edit, list) else [edit]
     for one_path, one_edit in zip(paths, edits):
         target = os.path.join(case, one_path)
+        if one_edit[1] == "REMOVE\n":
+            os.remove(target)
+            continue
+        if one_edit[1].startswith("COPY "):
+            # A momentum field made from the velocity file: lm = (1 0 0)
+            with open(os.path.join(case, one_edit[1].split()[1])) as f:
+                text = f.read()
+            text = re.sub(r"object\s+U;", "object lm;", text)
+            text = re.sub(r"dimensions\s+\[[^]]*\];",
+                          "dimensions [1 -2 -1 0 0 0 0];", text)
+            text = re.sub(r"internalField\s+[^;]*;",
+                          "internalField uniform (1 0 0);", text)
+            with open(target, "w") as f:
+                f.write(text)
+            continue
         with open(target) as f:
             text = f.read()
         new, count = re.subn(one_edit[0], one_edit[1], text, count=1)

@@ -373,7 +373,7 @@ def restart(root, n, failures):
     solve(case, "touchFoam.2")
     a, b = run.latest_time_dir(full), run.latest_time_dir(case)
     same = os.path.basename(a) == os.path.basename(b)
-    for field in ("lm", "F", "u"):
+    for field in ("lm", "F", "D"):
         if not same:
             break
         fa = foamfile.read_field(os.path.join(a, field)).internal(n)

@@ -65,7 +65,7 @@ def body():
     mesh = PolyMesh(case)
     wall_faces = np.asarray(mesh.patch_faces(WALL))
     X = mesh.points
-    # The wall is the plane Y = 0 with the outward normal -Y (0/lm)
+    # The wall is the plane Y = 0 with the outward normal -Y (0/U)
     h = 2 * float(np.mean(mesh.cell_centres[mesh.owner[wall_faces], 1]))
     times = sorted((d for d in os.listdir(case)
                     if re.fullmatch(r"[0-9.e+-]+", d) and float(d) > 0),

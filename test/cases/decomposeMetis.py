@@ -45,7 +45,7 @@ def check(case, method, nprocs, total):
         for p in m.patches:
             if p["type"] != "processor" and p["nFaces"] > 0:
                 patches_cut[p["name"]] = patches_cut.get(p["name"], 0) + 1
-        for field in ("lm", "F"):
+        for field in ("U", "F"):
             fld = foamfile.read_field(os.path.join(
                 case, "processor%d" % proc, "0", field))
             if not fld.uniform and len(fld.values) != m.n_cells:

@@ -25,7 +25,6 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 from touchfoam import cases, gmsh, postprocess, run, testing  # noqa: E402
 
 NAME = "freeBodyEnergy"
-PYTHON = "/usr/bin/python3"
 LIMITS = {"linear": 1e-12, "angular": 1e-10, "energy": 1e-10}
 
 
@@ -48,7 +47,7 @@ def spin(root, label, steps):
         run.run(["gmshToFoam", "cube.msh"], case)
     if mesh != "hex":
         run.restore0(case)
-        run.run([PYTHON, "initialise.py"], case, "initialise")
+        cases.set_initial_state(case)
     run.run(["touchFoam"], case, timeout=testing.RUN_TIMEOUT)
     drift = postprocess.momentum_drift(case)
     gain, _, _ = postprocess.energy_increase(case)

@@ -89,9 +89,9 @@ def bar(root, label, n, wall, end_time, at_rest=False, update=None,
     case = cases.prepare("elasticImpact", os.path.join(root, label), n=n,
                          touch=touch, control=ctrl)
     if wall is not None:
-        run.foam_set(case, "0/lm", "boundaryField/wall", wall)
+        run.foam_set(case, "0/U", "boundaryField/wall", wall)
     if at_rest:
-        run.foam_set(case, "0/lm", "internalField", "uniform (0 0 0)")
+        run.foam_set(case, "0/U", "internalField", "uniform (0 0 0)")
     return case
 
 

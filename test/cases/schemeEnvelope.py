@@ -37,7 +37,6 @@ from touchfoam import cases, gmsh, postprocess, run, testing  # noqa: E402
 NAME = "schemeEnvelope"
 ENERGY_TOL = 1e-10
 TWIST_TOL = 0.10
-PYTHON = "/usr/bin/python3"
 
 
 def column(root, label, n=4, nu=None, cfl=None, end=0.3, mesh="hex",
@@ -63,7 +62,7 @@ def column(root, label, n=4, nu=None, cfl=None, end=0.3, mesh="hex",
         run.run(["gmshToFoam", "column.msh"], case)
     if mesh != "hex":
         run.restore0(case)
-        run.run([PYTHON, "initialise.py"], case, "initialise")
+        cases.set_initial_state(case)
     run.run(["touchFoam"], case, timeout=testing.RUN_TIMEOUT)
     gain, E0, samples = postprocess.energy_increase(
         case, postprocess.initial_energy(case))

@@ -14,8 +14,8 @@ the origin:
 
 and the angular drift with the correction off must be larger than with it
 on (reported).  The monitor's first sample must also agree with the
-momenta of 0/lm (a check of the monitor's definitions: P to 1e-10, L to
-1e-3 since the first sample may be taken after one step).
+momenta of p = rho0 0/U (a check of the monitor's definitions: P to
+1e-10, L to 1e-3 since the first sample may be taken after one step).
 Work folders: test/runs/spinningMomentum/.
 """
 
@@ -49,8 +49,8 @@ def spin(root, label, amp, steps):
         L_init)
     if dP0 > 1e-10 or dL0 > 1e-3:
         raise AssertionError(
-            "%s: monitor's first sample P %s L %s differs from 0/lm's P %s "
-            "L %s" % (label, drift["P0"], drift["L0"], P_init, L_init))
+            "%s: monitor's first sample P %s L %s differs from the initial "
+            "P %s L %s" % (label, drift["P0"], drift["L0"], P_init, L_init))
     if drift["samples"] < steps:
         raise AssertionError("%s: %d monitor samples for %d steps"
                              % (label, drift["samples"], steps))

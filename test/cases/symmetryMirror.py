@@ -116,7 +116,7 @@ def body():
             f.write(MIRROR_DICT % normal)
         run.run(["mirrorMesh", "-overwrite"], whole,
                 name="mirrorMesh" + normal.replace(" ", ""))
-    run.run([cases.PYTHON, "initialise.py"], whole, "initialise")
+    cases.set_initial_state(whole)
 
     for case in (quarter, one_sided, whole):
         run.run(["touchFoam"], case, timeout=testing.RUN_TIMEOUT)

@@ -8,7 +8,7 @@ size of issue 3's acceptance; about 2.5 minutes on one core)
 for nu = 0.45 and nu = 0.495 to t = end (default 0.3 s), writing every
 0.01 s.  Asserts, for both runs, that the total energy of the solidMonitor
 never grows from one step to the next by more than 1e-12 of the initial
-energy (E_0 = sum V |p|^2 / (2 rho0) of 0/lm), and that the mean twist of
+energy (E_0 = sum V |p|^2 / (2 rho0) of p = rho0 0/U), and that the mean twist of
 the top face at t = 0.1 s (pointD, points at least 0.25 from the axis) is
 the same for both nu within 10 % (|a - b| / max(|a|, |b|)): a locking
 scheme would twist less as nu -> 0.5.  And the energy the scheme

@@ -221,7 +221,7 @@ def prepare(s, end):
         # the initial lm depends on the cell centres: 0/ is restored and
         # initialised again on the new cells
         run.restore0(case)
-        run.run([run.PYTHON, "initialise.py"], case, "initialise")
+        cases.set_initial_state(case)
     run.run(["checkMesh"], case)
     return case
 

@@ -17,8 +17,9 @@ Description
     two-stage TVD Runge-Kutta method at the CFL time step (Haider, Lee, Gil,
     Bonet, IJNME 109 (2017) 407-456).
 
-    Reads 0/lm (linear momentum, with the boundary conditions), optionally
-    0/F, constant/mechanicalProperties and the TOUCH entries of
+    Reads the velocity 0/U [m/s] or the linear momentum 0/lm (lm when both
+    exist and agree: a restart), which carries the boundary conditions,
+    optionally 0/F, constant/mechanicalProperties and the TOUCH entries of
     system/fvSolution.  Writes the state lm, F, D (cell displacement) and
     pointD (point displacement), and U, P, sigma, sigmaEq, pressure, J and,
     with a rigidWall patch, contact (touchSolid).

@@ -1,8 +1,11 @@
 """Set-up of the touchFoam tutorials: initial fields and run copies.
 
-The tutorials' initialise.py scripts call the initialise_* functions; the
-tests and validation scripts call prepare() to make a copy of a tutorial
-with other settings, meshed and initialised exactly as its Allrun does.
+The tutorials set their initial state with OpenFOAM's setExprFields
+(system/setExprFieldsDict) or a uniform 0.orig/U; the tests and validation
+scripts call prepare() to make a copy of a tutorial with other settings,
+meshed and initialised exactly as its Allrun does (set_initial_state), and
+the initialise_* functions to write an initial velocity or F of their own
+into 0/U and 0/F.
 """
 
 import os
@@ -28,11 +31,12 @@ def material(case):
     return d
 
 
-def _write_lm_F(case, lm=None, F=None):
-    """Write 0/lm and 0/F internal fields (None: leave the file alone)."""
-    if lm is not None:
-        fld = FoamField(os.path.join(case, "0", "lm"))
-        fld.set_internal(lm)
+def _write_U_F(case, U=None, F=None):
+    """Write 0/U and 0/F internal fields (None: leave the file alone);
+    touchFoam starts from lm = rho0 U."""
+    if U is not None:
+        fld = FoamField(os.path.join(case, "0", "U"))
+        fld.set_internal(U)
         fld.write()
     if F is not None:
         fld = FoamField(os.path.join(case, "0", "F"))
@@ -41,7 +45,7 @@ def _write_lm_F(case, lm=None, F=None):
 
 
 def initialise_swinging_cube(case, U0=None):
-    """0/F = I + grad u(X_e, 0) at the cell centres; lm stays zero.
+    """0/F = I + grad u(X_e, 0) at the cell centres; U stays zero.
 
     The initial velocity of the swinging cube is exactly zero.
     """
@@ -49,27 +53,43 @@ def initialise_swinging_cube(case, U0=None):
     kw = {} if U0 is None else {"U0": U0}
     sol = analytic.SwingingCube(E=mat["E"], nu=mat["nu"], rho=mat["rho"], **kw)
     X = PolyMesh(case).cell_centres
-    _write_lm_F(case, lm=mat["rho"] * sol.velocity(X, 0.0),
-                F=sol.deformation_gradient(X, 0.0))
+    _write_U_F(case, U=sol.velocity(X, 0.0),
+               F=sol.deformation_gradient(X, 0.0))
     return len(X)
 
 
 def initialise_twisting_column(case, Omega=105.0, L=6.0):
-    """lm = rho0 (omega x X) at the cell centres; F = I (from 0.orig)."""
-    mat = material(case)
+    """U = omega x X at the cell centres; F = I (from 0.orig)."""
     X = PolyMesh(case).cell_centres
-    v = analytic.TwistingColumn(Omega=Omega, L=L).velocity(X)
-    _write_lm_F(case, lm=mat["rho"] * v)
+    _write_U_F(case, U=analytic.TwistingColumn(Omega=Omega, L=L).velocity(X))
     return len(X)
 
 
 def initialise_rigid_motion(case, translation, omega):
-    """lm = rho0 (v_t + omega x X) at the cell centres; F = I."""
-    mat = material(case)
+    """U = v_t + omega x X at the cell centres; F = I."""
     X = PolyMesh(case).cell_centres
-    _write_lm_F(case, lm=mat["rho"] * analytic.rigid_velocity(
-        X, translation, omega))
+    _write_U_F(case, U=analytic.rigid_velocity(X, translation, omega))
     return len(X)
+
+
+def set_initial_state(case):
+    """The initial state as the tutorials' Allruns set it: setExprFields
+    with system/setExprFieldsDict (if the case has one), at writePrecision
+    17 so that the fields keep every digit (the Allruns do the same through
+    system/controlOptions, which a controlDict rewritten by foamDictionary
+    no longer includes); the tutorials without one start from the uniform
+    velocity of 0.orig/U."""
+    if not os.path.exists(os.path.join(case, "system", "setExprFieldsDict")):
+        return
+    control = os.path.join(case, "system", "controlDict")
+    with open(control) as f:
+        original = f.read()
+    try:
+        foam_set(case, "system/controlDict", "writePrecision", 17)
+        run(["setExprFields"], case)
+    finally:
+        with open(control, "w") as f:
+            f.write(original)
 
 
 # -- run copies -------------------------------------------------------------
@@ -145,7 +165,7 @@ def prepare(tutorial, dst, n=None, nu=None, touch=None, control=None,
     restore0(dst)
     mesh_case(dst, tutorial, n)
     if initialise:
-        run([PYTHON, "initialise.py"], dst, "initialise")
+        set_initial_state(dst)
     return dst
 
 

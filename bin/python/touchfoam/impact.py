@@ -6,7 +6,7 @@ the wall at c_p = sqrt((lambda + 2 mu)/rho0); behind it (X < c_p t) the bar
 is at rest with sigma_xx = -rho0 c_p v0, ahead of it the bar is unstressed
 and still moves at -v0.  In uniaxial strain J = F_xx, so sigma_xx = P_xx.
 
-    initialise_elastic_impact   0/lm = -rho0 v0 e_x
+    initialise_elastic_impact   0/U = -v0 e_x
     ElasticImpact               the closed-form solution
     front_metrics               plateau, front position, overshoot behind
                                 the front and precursor ahead of it, from
@@ -49,13 +49,12 @@ class ElasticImpact:
 
 
 def initialise_elastic_impact(case, v0=V0):
-    """0/lm = uniform -rho0 v0 e_x; F = I (0/F absent).  Returns the
-    number of cells."""
-    rho = material(case)["rho"]
+    """0/U = uniform -v0 e_x (touchFoam starts from lm = rho0 U); F = I
+    (0/F absent).  Returns the number of cells."""
     n = PolyMesh(case).n_cells
-    lm = FoamField(os.path.join(case, "0", "lm"))
-    lm.set_uniform([-rho * v0, 0.0, 0.0])
-    lm.write()
+    U = FoamField(os.path.join(case, "0", "U"))
+    U.set_uniform([-v0, 0.0, 0.0])
+    U.write()
     return n
 
 

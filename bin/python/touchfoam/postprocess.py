@@ -68,10 +68,22 @@ def observed_orders(h, e):
     return orders
 
 
+def initial_momentum(case, m=None):
+    """The momentum touchFoam starts from, per cell: 0/lm if present,
+    else rho0 times the velocity 0/U."""
+    m = m or PolyMesh(case)
+    lm = os.path.join(case, "0", "lm")
+    if os.path.exists(lm):
+        return read_field(lm).internal(m.n_cells)
+    U = read_field(os.path.join(case, "0", "U")).internal(m.n_cells)
+    return material(case)["rho"] * np.asarray(U, float)
+
+
 def initial_energy(case):
-    """Kinetic energy sum V |p|^2 / (2 rho0) of 0/lm (F = I: no strain)."""
+    """Kinetic energy sum V |p|^2 / (2 rho0) of the initial momentum (F = I:
+    no strain)."""
     m = PolyMesh(case)
-    p = read_field(os.path.join(case, "0", "lm")).internal(m.n_cells)
+    p = initial_momentum(case, m)
     rho = material(case)["rho"]
     return float(np.sum(m.cell_volumes * np.sum(p * p, axis=1)) / (2 * rho))
 
@@ -142,9 +154,10 @@ def momentum_drift(case):
 
 
 def initial_momenta(case):
-    """Total linear and angular momentum (about the origin) of 0/lm."""
+    """Total linear and angular momentum (about the origin) of the initial
+    momentum."""
     m = PolyMesh(case)
-    p = read_field(os.path.join(case, "0", "lm")).internal(m.n_cells)
+    p = initial_momentum(case, m)
     V = m.cell_volumes[:, None]
     return (np.sum(V * p, axis=0),
             np.sum(V * np.cross(m.cell_centres, p), axis=0))

@@ -6,7 +6,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "touchSolid.H"
-#include "emptyFvPatch.H"
 #include "calculatedFvPatchFields.H"
 #include "calculatedPointPatchFields.H"
 #include "Switch.H"
@@ -40,37 +39,6 @@ static IOobject fieldIO
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
-
-void Foam::touchSolid::checkInput() const
-{
-    if (lm_.dimensions() != dimDensity*dimVelocity)
-    {
-        FatalErrorInFunction
-            << "Field " << lm_.objectPath() << " has dimensions "
-            << lm_.dimensions() << "; linear momentum needs "
-            << dimDensity*dimVelocity << " [kg/(m^2 s)]" << nl
-            << exit(FatalError);
-    }
-
-    for (const fvPatchVectorField& pf : lm_.boundaryField())
-    {
-        if
-        (
-            !pf.coupled()
-         && !isA<emptyFvPatch>(pf.patch())
-         && !isA<solidFluxFvPatchVectorField>(pf)
-        )
-        {
-            FatalErrorInFunction
-                << "Entry boundaryField/" << pf.patch().name() << "/type '"
-                << pf.type() << "' in " << lm_.objectPath()
-                << " is not a solid boundary condition." << nl
-                << "Valid types: " << solidFluxFvPatchVectorField::types()
-                << nl << exit(FatalError);
-        }
-    }
-}
-
 
 bool Foam::touchSolid::readMirrorPlanes(const dictionary& controls)
 {
@@ -297,8 +265,8 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     rungeKutta_(controls_),
     lm_
     (
-        fieldIO(mesh, "lm", IOobject::MUST_READ, IOobject::AUTO_WRITE),
-        mesh
+        fieldIO(mesh, "lm", IOobject::NO_READ, IOobject::AUTO_WRITE),
+        initialMomentum(mesh, *law_)
     ),
     F_
     (
@@ -357,7 +325,10 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     E0_(0),
     Estage_(0)
 {
-    checkInput();
+    if (mesh.time().value() == 0)
+    {
+        checkInitialVelocity();
+    }
 
     const scalar stableCFL = update_->stableCFL(rungeKutta_.name());
     if (timeStep_.CFL() > stableCFL)
