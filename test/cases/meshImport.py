@@ -15,13 +15,18 @@ Extras: --with-meshing
     v0 p_x (the scheme dissipates, it must not create energy), and p_x is
     60 to 105 % of the acoustic rho c v0 A t, A = H t_z the end's area
     (release from the free edges and the smeared front only lower it).
-  - a 12 x 2 x 2 C3D8 bar .inp (bin/python/touchfoam/inp.py) through
+  - a 24 x 2 x 2 C3D8 bar .inp (bin/python/touchfoam/inp.py) through
     bin/inpToGmsh and gmshToFoam: checkMesh passes and finds the cellZones
     'left' and 'right' with the element sets' cell counts (as meshio, an
     independent reader, counts them) and volumes, in x < L/2 and x > L/2,
     and the patches 'left', 'right' (ny nz faces each) and 'sides'
     (2 nx (ny + nz)), no 'defaultFaces'; the same with 'right' given as a
-    node-based surface (TYPE=NODE over a node set).
+    node-based surface (TYPE=NODE over a node set); touchFoam runs on it
+    (linearElastic, 'left' pushed at v0, 'sides' symmetric planes: uniaxial
+    strain) until the front is at 3/4 of the bar: six cells behind it
+    sigma_xx is -rho c v0 and sigma_yy lambda/(lambda + 2 mu) of it within
+    2 % (the limited scheme's ripple behind the front), and
+    p_x within 2 % of the acoustic end force's impulse rho c v0 A t.
   - refused, exit status 1, with a message naming the culprit: an element
     with its nodes in the mirror order (its label and 'negative volume'),
     a zone that is no element set (-zones left middle: 'middle' and the
@@ -40,7 +45,9 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "..", "..", "bin", "python"))
 
 from touchfoam import monitor, run, testing  # noqa: E402
+from touchfoam.foamfile import header_text  # noqa: E402
 from touchfoam.inp import bar_labels, write_bar_inp  # noqa: E402
+from touchfoam.mesh import PolyMesh  # noqa: E402
 
 NAME = "meshImport"
 
@@ -48,7 +55,7 @@ NAME = "meshImport"
 PLATE = {"L": 0.2, "H": 0.1, "R": 0.02, "t": 0.005}
 RHO, E, NU, V0 = 1000.0, 1e6, 0.4, 2.0
 
-BAR_COUNTS = (12, 2, 2)
+BAR_COUNTS = (24, 2, 2)
 BAR_SIZE = (1.0, 0.05, 0.05)
 
 
@@ -219,6 +226,66 @@ def bar(root, failures, lines):
     if verdict != "Mesh OK." or patches != want_patches:
         failures.append("bar with a node surface: %s, patches %s"
                         % (verdict, patches))
+    run_bar(case, failures, lines)
+
+
+def run_bar(case, failures, lines):
+    """touchFoam on the converted bar: its end 'left' pushed at v0, the
+    'sides' symmetric planes (uniaxial strain), linearElastic; until the
+    wave reaches the far end the momentum is the impulse of the acoustic
+    end force, p_x = rho c v0 A t."""
+    length, width, height = BAR_SIZE
+    rho, e, nu, v0 = 7800.0, 2e11, 0.3, 1.0
+    with open(os.path.join(case, "constant", "mechanicalProperties"),
+              "w") as f:
+        f.write(header_text("dictionary", "mechanicalProperties",
+                            "constant")
+                + "model linearElastic;\nrho %g;\nE %g;\nnu %g;\n"
+                % (rho, e, nu))
+    os.makedirs(os.path.join(case, "0"), exist_ok=True)
+    with open(os.path.join(case, "0", "lm"), "w") as f:
+        f.write(header_text("volVectorField", "lm", "0")
+                + "dimensions [1 -2 -1 0 0 0 0];\n"
+                "internalField uniform (0 0 0);\nboundaryField\n{\n"
+                "    left { type prescribedVelocity; velocity uniform "
+                "(%g 0 0); value uniform (0 0 0); }\n"
+                "    right { type traction; value uniform (0 0 0); }\n"
+                "    sides { type symmetricPlane; value uniform (0 0 0); }\n"
+                "}\n" % v0)
+    nx, ny, nz = BAR_COUNTS
+    # The front to 3/4 of the bar at CFL 0.3 on the smallest cell size
+    h = min(length / nx, width / ny, height / nz)
+    steps = int(0.75 * length / (0.3 * h))
+    run.foam_set(case, "system/controlDict", "maxSteps", steps)
+    run.foam_set(case, "system/controlDict", "endTime", 1)
+    run.run(["touchFoam"], case, timeout=testing.RUN_TIMEOUT)
+    mon = monitor.read_monitor(case)
+    t, px = mon["Time"], mon["px"]
+    lam = e * nu / ((1 + nu) * (1 - 2 * nu))
+    mu = e / (2 * (1 + nu))
+    c = math.sqrt((lam + 2 * mu) / rho)
+    front = c * t[-1]
+    momentum = px[-1] / (rho * c * v0 * width * height * t[-1])
+
+    # The plateau behind the front, six cells clear of its spread
+    centres = PolyMesh(case).cell_centres
+    sigma = testing.read_internal(run.latest_time_dir(case), "sigma",
+                                  len(centres))
+    behind = centres[:, 0] < front - 6 * length / nx
+    xx, yy = sigma[behind, 0], sigma[behind, 3]
+    plateau = -rho * c * v0
+    lateral = lam / (lam + 2 * mu) * plateau
+    error = max(abs(xx / plateau - 1).max(), abs(yy / lateral - 1).max())
+    lines.append("touchFoam on it, %d steps, front at %.2f L: p_x %.4f of "
+                 "rho c v0 A t, sigma_xx and sigma_yy of %d cells behind "
+                 "the front within %.1e of -rho c v0 and its lambda/(lambda "
+                 "+ 2 mu)" % (len(t), front / length, momentum,
+                              behind.sum(), error))
+    if len(t) != steps or front > length or behind.sum() < nx / 4 \
+            or abs(momentum - 1) > 0.02 or error > 0.02:
+        failures.append("bar run: %d steps, front at %.2f L, p_x %.4f of "
+                        "the acoustic one, stress error %.2e"
+                        % (len(t), front / length, momentum, error))
 
 
 def refused(root, failures, lines):
