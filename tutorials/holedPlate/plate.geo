@@ -17,7 +17,9 @@ h = (H/2 - R)/n;
 
 Mesh.MshFileVersion = 2.2;
 Mesh.RecombineAll = 1;
-Mesh.Algorithm = 6;             // frontal-Delaunay, then recombined
+// Frontal-Delaunay, then recombined (Debian 12's gmsh 4.8.4 ends with a
+// segmentation fault on this plate with algorithm 8, 2026-12-04)
+Mesh.Algorithm = 6;
 Mesh.RecombinationAlgorithm = 1;
 
 Point(1) = {-L/2, -H/2, 0, h};
