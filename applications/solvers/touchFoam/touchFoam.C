@@ -38,12 +38,26 @@ Description
 
 Usage
     touchFoam [-parallel] [-case dir]
+    touchFoam -listEntries [-markdown]   (every entry it reads, and exit)
 
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
 #include "touchSolid.H"
 #include "runProgress.H"
+#include "declaredEntry.H"
+
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    static const declaredEntry<label> maxStepsEntry
+    (
+        "system/controlDict", "maxSteps",
+        "stop (and write) after this many steps (-1: no limit)",
+        "-", -1, entryLimits::above(-1, true)
+    );
+}
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -54,7 +68,47 @@ int main(int argc, char *argv[])
         "Explicit large-strain solid dynamics with the TOUCH scheme"
     );
 
-    #include "setRootCase.H"
+    argList::addBoolOption
+    (
+        "listEntries",
+        "print every dictionary entry touchFoam reads (where, meaning, unit,"
+        " default or example, valid values) and exit"
+    );
+    argList::addBoolOption
+    (
+        "markdown",
+        "with -listEntries: write the list as the Markdown page"
+        " doc/entries.md"
+    );
+
+    // -listEntries needs no case: answer it before the case is checked,
+    // without the banner (its output is a page of its own)
+    for (int argi = 1; argi < argc; ++argi)
+    {
+        if (std::string(argv[argi]) == "-listEntries")
+        {
+            argList::noBanner();
+            argList::noJobInfo();
+        }
+    }
+    Foam::argList args(argc, argv);
+    if (args.found("listEntries"))
+    {
+        if (args.found("markdown"))
+        {
+            entryDeclaration::writeMarkdown(Info);
+        }
+        else
+        {
+            entryDeclaration::writeText(Info);
+        }
+        return 0;
+    }
+    if (!args.checkRootCase())
+    {
+        Foam::FatalError.exit();
+    }
+    #include "foamDlOpenLibs.H"
     #include "createTime.H"
     #include "createMesh.H"
 
@@ -87,8 +141,7 @@ int main(int argc, char *argv[])
 
     touchSolid solid(mesh);
 
-    const label maxSteps =
-        runTime.controlDict().getOrDefault<label>("maxSteps", -1);
+    const label maxSteps = maxStepsEntry.read(runTime.controlDict());
 
     if (!solid.valid())
     {

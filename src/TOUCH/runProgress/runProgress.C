@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "runProgress.H"
+#include "declaredEntry.H"
 #include "touchSolid.H"
 #include "Time.H"
 
@@ -61,25 +62,26 @@ public:
 } // End namespace Foam
 
 
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    static const declaredEntry<scalar> progressIntervalEntry
+    (
+        "system/controlDict", "progressInterval",
+        "seconds of wall time between the log's progress lines (0: a line"
+        " every step)",
+        "s", 10, entryLimits::between(0, GREAT, true, false)
+    );
+}
+
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 Foam::scalar Foam::runProgress::readInterval(const Time& runTime)
 {
     const dictionary& dict = runTime.controlDict();
-    const scalar interval =
-        dict.getOrDefault<scalar>("progressInterval", 10);
-
-    if (!(interval >= 0 && std::isfinite(interval)))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'progressInterval' = " << interval << " in "
-            << dict.name() << " is out of range: valid values are >= 0,"
-            << " the seconds of wall time between progress lines"
-            << " (0: a line every step)" << nl
-            << exit(FatalIOError);
-    }
-
-    return interval;
+    return progressIntervalEntry.read(dict);
 }
 
 

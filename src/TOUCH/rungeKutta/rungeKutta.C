@@ -6,6 +6,21 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "rungeKutta.H"
+#include "declaredEntry.H"
+
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    static const declaredEntry<word> timeSchemeEntry
+    (
+        "system/fvSolution TOUCH", "timeScheme",
+        "strong-stability-preserving Runge-Kutta scheme: RK2 (two-stage"
+        " TVD) or RK3 (three-stage, Shu and Osher)",
+        "-", word("RK2"), entryLimits::oneOf({"RK2", "RK3"})
+    );
+}
+
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
@@ -49,7 +64,7 @@ Foam::scalarList Foam::rungeKutta::stageTimes(const scalarList& alpha)
 
 Foam::rungeKutta::rungeKutta(const dictionary& controls)
 :
-    name_(controls.getOrDefault<word>("timeScheme", "RK2")),
+    name_(timeSchemeEntry.read(controls)),
     alpha_(weights(controls, name_)),
     c_(stageTimes(alpha_))
 {}

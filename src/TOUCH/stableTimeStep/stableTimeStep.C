@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "stableTimeStep.H"
+#include "declaredEntry.H"
 #include "mathematicalConstants.H"
 #include "compactAddressing.H"
 
@@ -39,21 +40,26 @@ static inline scalar minEigenValue(const symmTensor& A)
 } // End namespace Foam
 
 
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    static const declaredEntry<scalar> CFLEntry
+    (
+        "system/fvSolution TOUCH", "CFL",
+        "Courant number: dt = CFL min over cells of h/Up (h the cell's"
+        " current height between opposite faces)",
+        "-", 0.3, entryLimits::between(0, 1, false, true),
+        declaredEntry<scalar>::required
+    );
+}
+
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 Foam::scalar Foam::stableTimeStep::readCFL(const dictionary& controls)
 {
-    const scalar CFL = controls.get<scalar>("CFL");
-
-    if (!(CFL > 0 && CFL <= 1))
-    {
-        FatalIOErrorInFunction(controls)
-            << "Entry 'CFL' = " << CFL << " in " << controls.name()
-            << " is out of range: valid values satisfy 0 < CFL <= 1" << nl
-            << exit(FatalIOError);
-    }
-
-    return CFL;
+    return CFLEntry.read(controls);
 }
 
 

@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "touchSolid.H"
+#include "declaredEntry.H"
 #include "calculatedFvPatchFields.H"
 #include "calculatedPointPatchFields.H"
 #include "Switch.H"
@@ -38,24 +39,35 @@ static IOobject fieldIO
 } // End namespace Foam
 
 
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    static const declaredEntry<Switch> angularMomentumEntry
+    (
+        "system/fvSolution TOUCH", "angularMomentumPreservation",
+        "correct the momentum rate so that the total angular momentum"
+        " follows the boundary torques exactly (free bodies)",
+        "-", Switch(Switch::ON), entryLimits::any(),
+        declaredEntry<Switch>::required
+    );
+
+    static const declaredEntry<word> symmetricPlanesEntry
+    (
+        "system/fvSolution TOUCH", "symmetricPlanes",
+        "symmetric and skew-symmetric planes as one-sided boundaries or as"
+        " mirrors (gradients, limiter and point motion see each cell's"
+        " reflection)",
+        "-", word("oneSided"), entryLimits::oneOf({"oneSided", "mirror"})
+    );
+}
+
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 bool Foam::touchSolid::readMirrorPlanes(const dictionary& controls)
 {
-    const word planes
-    (
-        controls.getOrDefault<word>("symmetricPlanes", "oneSided")
-    );
-
-    if (planes != "oneSided" && planes != "mirror")
-    {
-        FatalIOErrorInFunction(controls)
-            << "Unknown symmetricPlanes '" << planes << "' in "
-            << controls.name() << ": valid choices are oneSided (the"
-            << " default) and mirror" << nl << exit(FatalIOError);
-    }
-
-    return planes == "mirror";
+    return symmetricPlanesEntry.read(controls) == "mirror";
 }
 
 
@@ -259,7 +271,7 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     angularMomentum_(mesh),
     preserveAngularMomentum_
     (
-        controls_.get<Switch>("angularMomentumPreservation")
+        angularMomentumEntry.read(controls_)
     ),
     nodalAveraging_(nodalAveraging::New(mesh, controls_, *law_)),
     rungeKutta_(controls_),

@@ -108,27 +108,8 @@ Foam::scalar Foam::touchSolid::strainEnergy() const
 
 void Foam::touchSolid::writeSummary(Ostream& os) const
 {
-    os  << "    mechanical law  " << law_->type() << ": rho " << law_->rho()
-        << ", E " << law_->E() << ", nu " << law_->nu();
-
-    // A law's own constants (vonMisesPlastic: yieldStress,
-    // hardeningModulus) are the other entries of its dictionary, the
-    // contents of constant/mechanicalProperties: every law's are shown
-    // without a print of its own to keep in step with what it reads
-    for (const entry& e : *law_)
-    {
-        const word& key = e.keyword();
-        if
-        (
-            e.isStream()
-         && key != "model" && key != "rho" && key != "E" && key != "nu"
-        )
-        {
-            os  << ", " << key << ' ' << e.stream().toString().c_str();
-        }
-    }
-
-    const word reconstruction(controls_.get<word>("reconstruction"));
+    os  << "    mechanical law  ";
+    law_->writeConstants(os);
 
     os  << nl
         << "    elastic moduli  mu " << law_->mu() << ", lambda "
@@ -137,14 +118,8 @@ void Foam::touchSolid::writeSummary(Ostream& os) const
         << nl
         << "    h_min           " << timeStep_.hMin() << nl
         << "    scheme          Riemann solver " << riemann_->type()
-        << ", reconstruction " << reconstruction;
-
-    if (reconstruction == "limitedLinear")
-    {
-        os  << " (limiter " << controls_.get<word>("limiter") << ')';
-    }
-
-    os  << ", CFL " << timeStep_.CFL() << nl
+        << ", reconstruction " << reconstruction_.description().c_str()
+        << ", CFL " << timeStep_.CFL() << nl
         << "                    " << rungeKutta_.name() << " ("
         << rungeKutta_.nStages() << "-stage SSP Runge-Kutta), F update "
         << update_->type() << ", angular momentum preservation "

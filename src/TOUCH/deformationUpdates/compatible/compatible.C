@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "compatible.H"
+#include "declaredEntry.H"
 #include "syncTools.H"
 #include "Switch.H"
 #include "addToRunTimeSelectionTable.H"
@@ -60,6 +61,36 @@ static inline void spreadToPoints
 }
 
 } // End namespace Foam
+
+
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    static const declaredEntry<word> jumpShareEntry
+    (
+        "system/fvSolution TOUCH", "jumpShare",
+        "FUpdate compatible: the momentum upwinding damps phi^2 (quadratic)"
+        " or phi (linear) of the cell jump, phi the limiter's share",
+        "-", word("quadratic"), entryLimits::oneOf({"quadratic", "linear"})
+    );
+
+    static const declaredEntry<scalar> pointUpwindingEntry
+    (
+        "system/fvSolution TOUCH", "pointUpwinding",
+        "FUpdate compatible: weight of the upwinding of the point"
+        " velocities (0: off)",
+        "-", 1, entryLimits::above(0, true)
+    );
+
+    static const declaredEntry<Switch> pointLimiterEntry
+    (
+        "system/fvSolution TOUCH", "pointLimiter",
+        "FUpdate compatible: limited extrapolation of the point velocities"
+        " (default: on with reconstruction limitedLinear, else off)",
+        "-", Switch(Switch::OFF)
+    );
+}
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
@@ -427,17 +458,7 @@ bool Foam::deformationUpdates::compatible::readQuadraticShare
     const dictionary& controls
 )
 {
-    const word share(controls.getOrDefault<word>("jumpShare", "quadratic"));
-
-    if (share != "quadratic" && share != "linear")
-    {
-        FatalIOErrorInFunction(controls)
-            << "Unknown jumpShare '" << share << "' in " << controls.name()
-            << ": valid choices are quadratic (the default) and linear"
-            << nl << exit(FatalIOError);
-    }
-
-    return share == "quadratic";
+    return jumpShareEntry.read(controls) == "quadratic";
 }
 
 
@@ -458,9 +479,10 @@ Foam::deformationUpdates::compatible::compatible
     (
         faces.mesh(),
         reconstruction,
-        controls.getOrDefault<Switch>
+        controls.found(pointLimiterEntry.name())
+      ? pointLimiterEntry.read(controls)
+      : Switch
         (
-            "pointLimiter",
             reconstruction.schemeType()
          == linearReconstruction::scheme::limitedLinear
         )
@@ -472,7 +494,7 @@ Foam::deformationUpdates::compatible::compatible
     fixingFace_(faces.mesh().boundary().size()),
     pointForce_(faces.mesh().nPoints(), Zero),
     quadraticShare_(readQuadraticShare(controls)),
-    pointUpwinding_(controls.getOrDefault<scalar>("pointUpwinding", 1)),
+    pointUpwinding_(pointUpwindingEntry.read(controls)),
     pointMobility_
     (
         calcPointMobility
@@ -486,14 +508,6 @@ Foam::deformationUpdates::compatible::compatible
     upwindTangential_(0),
     upwindInline_(riemann.upwindCoefficients(upwindNormal_, upwindTangential_))
 {
-    if (pointUpwinding_ < 0)
-    {
-        FatalIOErrorInFunction(controls)
-            << "Entry 'pointUpwinding' = " << pointUpwinding_ << " in "
-            << controls.name() << " is out of range: valid values are >= 0"
-            << nl << exit(FatalIOError);
-    }
-
     forAll(faces.mesh().boundary(), patchi)
     {
         const label n = pC_[patchi].size();

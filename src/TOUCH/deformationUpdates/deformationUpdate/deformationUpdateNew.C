@@ -6,6 +6,32 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "deformationUpdate.H"
+#include "declaredEntry.H"
+
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    //- The names of the selection table
+    static wordList deformationUpdateChoices()
+    {
+        return
+            deformationUpdate::dictionaryConstructorTablePtr_
+          ? deformationUpdate::dictionaryConstructorTablePtr_->sortedToc()
+          : wordList();
+    }
+
+    static const declaredEntry<word> FUpdateEntry
+    (
+        "system/fvSolution TOUCH", "FUpdate",
+        "how F and the momentum rate are formed: from the point motion"
+        " (compatible) or from the faces' Riemann velocities (constrained,"
+        " plain)",
+        "-", word("compatible"),
+        entryLimits::selectedFrom(&deformationUpdateChoices)
+    );
+}
+
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -18,10 +44,7 @@ Foam::autoPtr<Foam::deformationUpdate> Foam::deformationUpdate::New
     const linearReconstruction& reconstruction
 )
 {
-    const word updateType
-    (
-        controls.getOrDefault<word>("FUpdate", "compatible")
-    );
+    const word updateType(FUpdateEntry.read(controls));
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(updateType);
 

@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "solidMonitor.H"
+#include "declaredEntry.H"
 #include "touchSolid.H"
 #include "rigidWallFvPatchVectorField.H"
 #include "addToRunTimeSelectionTable.H"
@@ -19,6 +20,20 @@ namespace functionObjects
     defineTypeNameAndDebug(solidMonitor, 0);
     addToRunTimeSelectionTable(functionObject, solidMonitor, dictionary);
 }
+}
+
+
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    static const declaredEntry<vector> originEntry
+    (
+        "system/controlDict functions, type solidMonitor", "origin",
+        "the point the total angular momentum is taken about (current"
+        " positions)",
+        "m", vector::zero
+    );
 }
 
 
@@ -100,7 +115,7 @@ bool Foam::functionObjects::solidMonitor::read(const dictionary& dict)
     fvMeshFunctionObject::read(dict);
     writeFile::read(dict);
 
-    origin_ = dict.getOrDefault<vector>("origin", Zero);
+    origin_ = originEntry.read(dict);
 
     return true;
 }

@@ -7,6 +7,7 @@ License
 
 #include "mechanicalLaw.H"
 #include "fvMesh.H"
+#include "declaredEntry.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -17,30 +18,28 @@ namespace Foam
 }
 
 
-// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
 
-Foam::scalar Foam::mechanicalLaw::readBounded
-(
-    const word& entry,
-    const scalar lower,
-    const scalar upper,
-    const bool includeLower
-) const
+namespace Foam
 {
-    const scalar value = get<scalar>(entry);
-    const bool aboveLower = includeLower ? value >= lower : value > lower;
+    static const declaredEntry<scalar> rhoEntry
+    (
+        "constant/mechanicalProperties", "rho", "reference density", "kg/m^3", 1100,
+        entryLimits::above(0, false), declaredEntry<scalar>::required
+    );
 
-    if (!(aboveLower && value < upper))
-    {
-        FatalIOErrorInFunction(*this)
-            << "Entry '" << entry << "' = " << value << " in "
-            << objectPath() << " is out of range: valid values satisfy "
-            << lower << (includeLower ? " <= " : " < ") << entry << " < "
-            << upper << nl
-            << exit(FatalIOError);
-    }
+    static const declaredEntry<scalar> EEntry
+    (
+        "constant/mechanicalProperties", "E", "Young's modulus", "Pa", 17e6,
+        entryLimits::above(0, false), declaredEntry<scalar>::required
+    );
 
-    return value;
+    static const declaredEntry<scalar> nuEntry
+    (
+        "constant/mechanicalProperties", "nu", "Poisson's ratio", "-", 0.45,
+        entryLimits::between(-1, 0.5, false, false),
+        declaredEntry<scalar>::required
+    );
 }
 
 
@@ -65,9 +64,9 @@ Foam::mechanicalLaw::mechanicalLaw
         dict
     ),
     mesh_(mesh),
-    rho_(readBounded("rho", 0, GREAT)),
-    E_(readBounded("E", 0, GREAT)),
-    nu_(readBounded("nu", -1, 0.5)),
+    rho_(rhoEntry.read(*this)),
+    E_(EEntry.read(*this)),
+    nu_(nuEntry.read(*this)),
     mu_(E_/(2*(1 + nu_))),
     lambda_(E_*nu_/((1 + nu_)*(1 - 2*nu_))),
     kappa_(lambda_ + 2*mu_/3)
@@ -75,6 +74,12 @@ Foam::mechanicalLaw::mechanicalLaw
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+
+void Foam::mechanicalLaw::writeConstants(Ostream& os) const
+{
+    os  << type() << ": rho " << rho_ << ", E " << E_ << ", nu " << nu_;
+}
 
 Foam::scalar Foam::mechanicalLaw::Up() const
 {

@@ -6,7 +6,30 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mechanicalLaw.H"
+#include "declaredEntry.H"
 #include "fvMesh.H"
+
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    //- The names of the selection table
+    static wordList mechanicalLawChoices()
+    {
+        return
+            mechanicalLaw::dictionaryConstructorTablePtr_
+          ? mechanicalLaw::dictionaryConstructorTablePtr_->sortedToc()
+          : wordList();
+    }
+
+    static const declaredEntry<word> modelEntry
+    (
+        "constant/mechanicalProperties", "model", "the constitutive law", "-", word("neoHookean"),
+        entryLimits::selectedFrom(&mechanicalLawChoices),
+        declaredEntry<word>::required
+    );
+}
+
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -39,7 +62,7 @@ Foam::autoPtr<Foam::mechanicalLaw> Foam::mechanicalLaw::New
     const dictionary& dict
 )
 {
-    const word modelType(dict.get<word>("model"));
+    const word modelType(modelEntry.read(dict));
 
     Info<< "Selecting mechanical law " << modelType << endl;
 

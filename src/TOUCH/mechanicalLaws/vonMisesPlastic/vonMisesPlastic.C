@@ -10,6 +10,7 @@ License
 #include <cstring>
 #include "zeroGradientFvPatchFields.H"
 #include "addToRunTimeSelectionTable.H"
+#include "declaredEntry.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -23,25 +24,37 @@ namespace mechanicalLaws
 }
 
 
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    static const declaredEntry<scalar> yieldStressEntry
+    (
+        "constant/mechanicalProperties, model vonMisesPlastic", "yieldStress", "initial yield stress", "Pa", 0.4e9,
+        entryLimits::above(0, false), declaredEntry<scalar>::required
+    );
+
+    static const declaredEntry<scalar> hardeningModulusEntry
+    (
+        "constant/mechanicalProperties, model vonMisesPlastic", "hardeningModulus", "linear isotropic hardening modulus", "Pa",
+        0.1e9, entryLimits::above(0, true), declaredEntry<scalar>::required
+    );
+
+    static const declaredEntry<word> yieldStressMeasureEntry
+    (
+        "constant/mechanicalProperties, model vonMisesPlastic", "yieldStressMeasure",
+        "the stress the yield stress bounds: the Kirchhoff stress (the seed"
+        " paper's) or the Cauchy stress (CalculiX's)",
+        "-", word("Kirchhoff"), entryLimits::oneOf({"Kirchhoff", "Cauchy"})
+    );
+}
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 bool Foam::mechanicalLaws::vonMisesPlastic::readYieldStressMeasure() const
 {
-    const word measure
-    (
-        getOrDefault<word>("yieldStressMeasure", "Kirchhoff")
-    );
-
-    if (measure != "Kirchhoff" && measure != "Cauchy")
-    {
-        FatalIOErrorInFunction(*this)
-            << "Entry 'yieldStressMeasure' = " << measure << " in "
-            << objectPath() << " is not valid: valid choices are Kirchhoff"
-            << " (the default) and Cauchy" << nl
-            << exit(FatalIOError);
-    }
-
-    return measure == "Cauchy";
+    return yieldStressMeasureEntry.read(*this) == "Cauchy";
 }
 
 
@@ -99,8 +112,8 @@ Foam::mechanicalLaws::vonMisesPlastic::vonMisesPlastic
 )
 :
     mechanicalLaw(mesh, dict),
-    yieldStress_(readBounded("yieldStress", 0, GREAT)),
-    hardeningModulus_(readBounded("hardeningModulus", 0, GREAT, true)),
+    yieldStress_(yieldStressEntry.read(*this)),
+    hardeningModulus_(hardeningModulusEntry.read(*this)),
     yieldOnCauchy_(readYieldStressMeasure()),
     CpInv_
     (
@@ -152,6 +165,15 @@ Foam::mechanicalLaws::vonMisesPlastic::vonMisesPlastic
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+
+void Foam::mechanicalLaws::vonMisesPlastic::writeConstants(Ostream& os) const
+{
+    mechanicalLaw::writeConstants(os);
+    os  << ", yieldStress " << yieldStress_ << ", hardeningModulus "
+        << hardeningModulus_ << ", yieldStressMeasure "
+        << (yieldOnCauchy_ ? "Cauchy" : "Kirchhoff");
+}
 
 void Foam::mechanicalLaws::vonMisesPlastic::elasticTrial
 (

@@ -7,6 +7,33 @@ License
 
 #include "nodalAveraging.H"
 #include "mechanicalLaw.H"
+#include "declaredEntry.H"
+
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    //- off and the names of the selection table
+    static wordList nodalAveragingChoices()
+    {
+        wordList names({"off"});
+        if (nodalAveraging::meshConstructorTablePtr_)
+        {
+            names.append(nodalAveraging::meshConstructorTablePtr_->sortedToc());
+        }
+        return names;
+    }
+
+    static const declaredEntry<word> nodalAveragingEntry
+    (
+        "system/fvSolution TOUCH", "nodalAveraging",
+        "average at the points: the volume ratio (pressure: laws with a"
+        " volumetric part of J alone) or the whole F (deformation: stateless"
+        " laws, tetrahedra)",
+        "-", word("off"), entryLimits::selectedFrom(&nodalAveragingChoices)
+    );
+}
+
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -17,7 +44,7 @@ Foam::autoPtr<Foam::nodalAveraging> Foam::nodalAveraging::New
     const mechanicalLaw& law
 )
 {
-    const word type(controls.getOrDefault<word>("nodalAveraging", "off"));
+    const word type(nodalAveragingEntry.read(controls));
 
     if (type == "off")
     {

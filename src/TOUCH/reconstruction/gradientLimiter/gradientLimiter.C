@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "gradientLimiter.H"
+#include "declaredEntry.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -16,6 +17,30 @@ namespace Foam
 }
 
 
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    //- The names of the selection table
+    static wordList gradientLimiterChoices()
+    {
+        return
+            gradientLimiter::dictionaryConstructorTablePtr_
+          ? gradientLimiter::dictionaryConstructorTablePtr_->sortedToc()
+          : wordList();
+    }
+
+    static const declaredEntry<word> limiterEntry
+    (
+        "system/fvSolution TOUCH", "limiter",
+        "reconstruction limitedLinear: the gradient limiter",
+        "-", word("BarthJespersen"),
+        entryLimits::selectedFrom(&gradientLimiterChoices),
+        declaredEntry<word>::required
+    );
+}
+
+
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
 Foam::autoPtr<Foam::gradientLimiter> Foam::gradientLimiter::New
@@ -23,7 +48,7 @@ Foam::autoPtr<Foam::gradientLimiter> Foam::gradientLimiter::New
     const dictionary& dict
 )
 {
-    const word limiterType(dict.get<word>("limiter"));
+    const word limiterType(limiterEntry.read(dict));
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(limiterType);
 

@@ -8,6 +8,7 @@ License
 #include "linearReconstruction.H"
 #include "fvMesh.H"
 #include "calculatedFvPatchFields.H"
+#include "declaredEntry.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -18,6 +19,21 @@ Foam::linearReconstruction::schemeNames
     { scheme::linear, "linear" },
     { scheme::limitedLinear, "limitedLinear" },
 });
+
+
+namespace Foam
+{
+    static const declaredEntry<word> reconstructionEntry
+    (
+        "system/fvSolution TOUCH", "reconstruction",
+        "the face values of p and P: cell values (firstOrder), least-squares"
+        " linear, or linear with a gradient limiter (limitedLinear: monotone"
+        " fronts)",
+        "-", word("limitedLinear"),
+        entryLimits::oneOf({"firstOrder", "linear", "limitedLinear"}),
+        declaredEntry<word>::required
+    );
+}
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
@@ -160,7 +176,7 @@ Foam::linearReconstruction::linearReconstruction
 )
 :
     mesh_(mesh),
-    scheme_(schemeNames.get("reconstruction", dict)),
+    scheme_(schemeNames[reconstructionEntry.read(dict)]),
     limiter_
     (
         scheme_ == scheme::limitedLinear
@@ -234,12 +250,7 @@ Foam::linearReconstruction::linearReconstruction
         );
     }
 
-    Info<< "Reconstruction " << schemeNames[scheme_];
-    if (limiter_.valid())
-    {
-        Info<< " with limiter " << dict.get<word>("limiter");
-    }
-    Info<< endl;
+    Info<< "Reconstruction " << description().c_str() << endl;
 
     {
         // The neighbour centres across the coupled patches, through a field
@@ -309,6 +320,17 @@ Foam::linearReconstruction::linearReconstruction
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::string Foam::linearReconstruction::description() const
+{
+    string text(schemeNames[scheme_]);
+    if (limiter_.valid())
+    {
+        text += " (limiter " + limiter_->type() + ')';
+    }
+    return text;
+}
+
 
 void Foam::linearReconstruction::update
 (

@@ -6,6 +6,30 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "riemannSolver.H"
+#include "declaredEntry.H"
+
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    //- The names of the selection table
+    static wordList riemannSolverChoices()
+    {
+        return
+            riemannSolver::dictionaryConstructorTablePtr_
+          ? riemannSolver::dictionaryConstructorTablePtr_->sortedToc()
+          : wordList();
+    }
+
+    static const declaredEntry<word> riemannSolverEntry
+    (
+        "system/fvSolution TOUCH", "riemannSolver",
+        "the face flux: contact momentum and traction from the two states",
+        "-", word("acoustic"), entryLimits::selectedFrom(&riemannSolverChoices),
+        declaredEntry<word>::required
+    );
+}
+
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -15,7 +39,7 @@ Foam::autoPtr<Foam::riemannSolver> Foam::riemannSolver::New
     const mechanicalLaw& law
 )
 {
-    const word solverType(dict.get<word>("riemannSolver"));
+    const word solverType(riemannSolverEntry.read(dict));
 
     Info<< "Selecting Riemann solver " << solverType << endl;
 
