@@ -6,8 +6,24 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "prescribedVelocityFvPatchVectorField.H"
+#include "declaredEntry.H"
 #include "addToRunTimeSelectionTable.H"
 #include "ConstantField.H"
+
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    static const describedEntry prescribedVelocityEntry
+    (
+        "0/U (or 0/lm) boundaryField, type prescribedVelocity", "velocity",
+        "the patch's velocity, a PatchFunction1 of time (uniform, nonuniform,"
+        " constant, table, tableFile, csvFile, polynomial, sine, square,"
+        " ...)",
+        "m/s", "", "table ((0 (0 0 0)) (1e-4 (0.1 0 0)))"
+    );
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -39,7 +55,13 @@ Foam::prescribedVelocityFvPatchVectorField::prescribedVelocityFvPatchVectorField
     (
         p, iF, dict, wordList({"velocity", "velocityCoeffs"})
     ),
-    velocity_(PatchFunction1<vector>::New(p.patch(), "velocity", dict))
+    velocity_
+    (
+        PatchFunction1<vector>::New
+        (
+            p.patch(), prescribedVelocityEntry.name(), dict
+        )
+    )
 {}
 
 

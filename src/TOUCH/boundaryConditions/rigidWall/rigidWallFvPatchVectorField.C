@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "rigidWallFvPatchVectorField.H"
+#include "declaredEntry.H"
 #include "addToRunTimeSelectionTable.H"
 #include "Time.H"
 #include "Constant.H"
@@ -20,6 +21,41 @@ namespace Foam
 }
 
 
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    static const declaredEntry<vector> wallPointEntry
+    (
+        "0/U (or 0/lm) boundaryField, type rigidWall", "point", "a point of the wall plane at t = 0", "m",
+        vector::zero, entryLimits::any(), declaredEntry<vector>::required
+    );
+
+    static const declaredEntry<vector> wallNormalEntry
+    (
+        "0/U (or 0/lm) boundaryField, type rigidWall", "normal",
+        "the wall's normal, from the wall into the solid (normalised)", "-",
+        vector(0, 1, 0), entryLimits::any(), declaredEntry<vector>::required
+    );
+
+    static const describedEntry wallContactEntry
+    (
+        "0/U (or 0/lm) boundaryField, type rigidWall", "contact",
+        "written by touchFoam with every time: 1 for a face in contact, 0"
+        " else (a restart continues with the same active set)",
+        "-", "uniform 0", "nonuniform List<scalar> 4(0 1 1 0)"
+    );
+
+    static const describedEntry wallVelocityEntry
+    (
+        "0/U (or 0/lm) boundaryField, type rigidWall", "velocity",
+        "the wall's velocity, a Function1 of time with an exact integral"
+        " (constant, polynomial, table, tableFile, csvFile)",
+        "m/s", "(0 0 0)", "table ((0 (0 0 0)) (1e-4 (0 0.1 0)))"
+    );
+}
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::vector Foam::rigidWallFvPatchVectorField::readNormal
@@ -28,7 +64,7 @@ Foam::vector Foam::rigidWallFvPatchVectorField::readNormal
     const dictionary& dict
 )
 {
-    const vector n(dict.get<vector>("normal"));
+    const vector n(wallNormalEntry.read(dict));
 
     if (mag(n) < VSMALL)
     {
@@ -50,18 +86,16 @@ Foam::rigidWallFvPatchVectorField::readVelocity
     const dictionary& dict
 )
 {
-    if (!dict.found("velocity", keyType::LITERAL))
+    const word& name = wallVelocityEntry.name();
+    if (!dict.found(name, keyType::LITERAL))
     {
         return autoPtr<Function1<vector>>
         (
-            new Function1Types::Constant<vector>("velocity", Zero)
+            new Function1Types::Constant<vector>(name, Zero)
         );
     }
 
-    autoPtr<Function1<vector>> velocity
-    (
-        Function1<vector>::New("velocity", dict)
-    );
+    autoPtr<Function1<vector>> velocity(Function1<vector>::New(name, dict));
 
     // The wall's position is the integral of its velocity: the forms that
     // integrate exactly
@@ -120,9 +154,10 @@ Foam::boolList Foam::rigidWallFvPatchVectorField::readContact
     const dictionary& dict
 )
 {
-    if (dict.found("contact"))
+    const word& name = wallContactEntry.name();
+    if (dict.found(name))
     {
-        return toBool(scalarField("contact", dict, p.size()));
+        return toBool(scalarField(name, dict, p.size()));
     }
 
     return boolList(p.size(), false);
@@ -274,7 +309,7 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
         p, iF, dict,
         wordList({"point", "normal", "velocity", "velocityCoeffs", "contact"})
     ),
-    point_(dict.get<vector>("point")),
+    point_(wallPointEntry.read(dict)),
     normal_(readNormal(p, dict)),
     velocity_(readVelocity(p, dict)),
     contact_(readContact(p, dict)),

@@ -6,8 +6,32 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "tractionFvPatchVectorField.H"
+#include "declaredEntry.H"
 #include "addToRunTimeSelectionTable.H"
 #include "ConstantField.H"
+
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    static const describedEntry tractionEntry
+    (
+        "0/U (or 0/lm) boundaryField, type traction", "traction",
+        "traction per reference area, a PatchFunction1 of time (uniform,"
+        " nonuniform, constant, table, tableFile, csvFile, polynomial, sine,"
+        " square, ...)",
+        "Pa", "uniform (0 0 0)", "table ((0 (0 0 0)) (1e-4 (1e5 0 0)))"
+    );
+
+    static const describedEntry pressureEntry
+    (
+        "0/U (or 0/lm) boundaryField, type traction", "pressure",
+        "pressure on the current surface (positive pushes into the solid), a"
+        " PatchFunction1 of time",
+        "Pa", "uniform 0", "table ((0 0) (1e-4 1.4e5))"
+    );
+}
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -44,8 +68,8 @@ Foam::tractionFvPatchVectorField::tractionFvPatchVectorField
 )
 :
     solidFluxFvPatchVectorField(p, iF),
-    traction_(readOrZero<vector>(p, "traction", dictionary::null)),
-    pressure_(readOrZero<scalar>(p, "pressure", dictionary::null))
+    traction_(readOrZero<vector>(p, tractionEntry.name(), dictionary::null)),
+    pressure_(readOrZero<scalar>(p, pressureEntry.name(), dictionary::null))
 {}
 
 
@@ -64,8 +88,8 @@ Foam::tractionFvPatchVectorField::tractionFvPatchVectorField
             "traction", "tractionCoeffs", "pressure", "pressureCoeffs"
         })
     ),
-    traction_(readOrZero<vector>(p, "traction", dict)),
-    pressure_(readOrZero<scalar>(p, "pressure", dict))
+    traction_(readOrZero<vector>(p, tractionEntry.name(), dict)),
+    pressure_(readOrZero<scalar>(p, pressureEntry.name(), dict))
 {}
 
 
