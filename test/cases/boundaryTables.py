@@ -103,8 +103,8 @@ def bar(root, label, n, wall, control=None):
     ctrl.update(control or {})
     case = cases.prepare("elasticImpact", os.path.join(root, label), n=n,
                          control=ctrl)
-    run.foam_set(case, "0/lm", "internalField", "uniform (0 0 0)")
-    run.foam_set(case, "0/lm", "boundaryField/wall", wall)
+    run.foam_set(case, "0/U", "internalField", "uniform (0 0 0)")
+    run.foam_set(case, "0/U", "boundaryField/wall", wall)
     return case
 
 
@@ -250,7 +250,7 @@ def pressure_run(root, n, failures):
     Z, cp = material(probe)
     P = Z * V
     rows = [(0.0, 0.0), (T_RAMP, P)]
-    run.foam_set(probe, "0/lm", "boundaryField/wall", "{ type traction; "
+    run.foam_set(probe, "0/U", "boundaryField/wall", "{ type traction; "
                  "pressure %s; }" % scalar_table(rows))
     case = solve(probe)
     plateau, prof, end, cells = profile_errors(

@@ -313,7 +313,7 @@ def bad_interval(root, args):
                                  timeout=testing.RUN_TIMEOUT)
     with open(log) as f:
         text = f.read()
-    words = ["'progressInterval'", "controlDict", ">= 0"]
+    words = ["'progressInterval'", "controlDict", "0 <= progressInterval"]
     missing = [w for w in words if w not in text]
     if status == 0 or missing:
         raise AssertionError("progressInterval -1: exit %d, the error lacks "

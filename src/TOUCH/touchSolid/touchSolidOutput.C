@@ -174,7 +174,10 @@ void Foam::touchSolid::writeOutputFields()
 
     {
         // lm/rho of the lm written with it, cell by cell and on the patches
+        // (with the dimensions of a velocity: a restart from a folder
+        // whose lm is missing reads this U, and checks them)
         volVectorField U(outputIO("U"), lm_/rho);
+        U.dimensions().reset(dimVelocity);
         U.write();
     }
 
