@@ -43,6 +43,9 @@ static IOobject fieldIO
 
 void Foam::touchSolid::checkInput() const
 {
+    checkPatchTypes(mesh_);
+    checkTwoD();
+
     if (lm_.dimensions() != dimDensity*dimVelocity)
     {
         FatalErrorInFunction
@@ -106,7 +109,12 @@ Foam::scalarList Foam::touchSolid::mirrorPatches
     forAll(lm.boundaryField(), patchi)
     {
         const fvPatchVectorField& pf = lm.boundaryField()[patchi];
-        if (isA<solidFluxFvPatchVectorField>(pf))
+        if (isA<emptyFvPatch>(pf.patch()))
+        {
+            // A 2D case is its one-cell slab between symmetric planes
+            signs[patchi] = 1;
+        }
+        else if (isA<solidFluxFvPatchVectorField>(pf))
         {
             const solidFluxFvPatchVectorField& condition =
                 refCast<const solidFluxFvPatchVectorField>(pf);
@@ -457,6 +465,11 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
         {
             invalidCell_ = celli;
         }
+    }
+
+    if (mesh_.nSolutionD() < 3)
+    {
+        constrainEmptyDirections();
     }
 }
 
