@@ -28,9 +28,19 @@ On a 4^3 swinging cube, one mistake at a time:
   - a misspelt jumpShare (quadratc),
   - a misspelt symmetricPlanes (mirorr),
   - 0/U with the dimensions of momentum, a 0/lm beside 0/U that disagrees
-    with rho U, and neither 0/U nor 0/lm.
-Each run must exit non-zero, its log must contain every expected word, and
-no time folder may be written.  Every mistake is tried; the failure names
+    with rho U, and neither 0/U nor 0/lm,
+  - patch types of the mesh the solid cannot use, set in
+    constant/polyMesh/boundary with 0/U left as it is (OpenFOAM itself
+    would stop reading it, without saying what to use): symmetryPlane,
+    symmetry, cyclic and cyclicAMI pairs (X0 with X1), a wedge pair (a
+    2.5 degree wedge meshed by blockMesh); and symmetryPlane with 0/U
+    saying symmetryPlane too (the OpenFOAM way); the error names the
+    patch, its type, the boundary file and the solid conditions,
+  - a 2D mesh (empty front and back) two cells thick.
+Each run must exit non-zero without a signal (the status of a run killed
+by one is negative, 128 + signal through a shell), its log must contain
+every expected word, and no time folder may be written.  Every mistake is
+tried; the failure names
 all that were not refused properly.
 Work folders: test/runs/badInput/.
 """
@@ -146,7 +156,65 @@ MISTAKES = [
 ]
 
 
-def check(root, label, path, edit, words):
+# A 2.5 degree wedge about the x axis, 1 x 0.9 radially (not through the
+# axis), in place of the unit cube's vertices, its Z0 and Z1 the wedge planes
+WEDGE_VERTICES = """vertices
+(
+    (0 0.1 -0.0043661) (1 0.1 -0.0043661) (1 1 -0.043661) (0 1 -0.043661)
+    (0 0.1 0.0043661) (1 0.1 0.0043661) (1 1 0.043661) (0 1 0.043661)
+);"""
+
+
+def boundary_type(patches, entries):
+    """Edits of constant/polyMesh/boundary giving each patch the entries
+    (its type and what the type needs)."""
+    return [(r"(\n    %s\n    \{\n        type\s+)patch;" % patch, r"\g<1>" + entries
+             % {"other": other}) for patch, other in patches]
+
+
+BOUNDARY = "constant/polyMesh/boundary"
+SOLID_TYPES = ["symmetricPlane", "skewSymmetricPlane", "traction"]
+
+# (label, files, edits, words, commands to run after the edits)
+PATCH_TYPES = [
+    ("symmetryPlanePatch", BOUNDARY,
+     boundary_type([("X0", "")], "symmetryPlane;"),
+     ["X0", "'symmetryPlane'", "boundary", "symmetricPlane", "lm"]
+     + SOLID_TYPES, []),
+    ("symmetryPlaneBoth", [BOUNDARY, "0/U", "0/U"],
+     boundary_type([("X0", "")], "symmetryPlane;")
+     + [(r'"\(X0\|Y0\|Z0\)"', '"(Y0|Z0)"'),
+        (r"boundaryField\s*\{",
+         "boundaryField\n{\n    X0 { type symmetryPlane; }")],
+     ["X0", "'symmetryPlane'", "boundary"] + SOLID_TYPES, []),
+    ("symmetryPatch", BOUNDARY,
+     boundary_type([("Y1", "")], "symmetry;"),
+     ["Y1", "'symmetry'", "boundary", "symmetricPlane"] + SOLID_TYPES, []),
+    ("cyclicPatch", [BOUNDARY, BOUNDARY],
+     boundary_type([("X0", "X1"), ("X1", "X0")],
+                   "cyclic; neighbourPatch %(other)s;"),
+     ["X0", "'cyclic'", "boundary", "Periodic"] + SOLID_TYPES, []),
+    ("cyclicAMIPatch", [BOUNDARY, BOUNDARY],
+     boundary_type([("X0", "X1"), ("X1", "X0")],
+                   "cyclicAMI; neighbourPatch %(other)s;"),
+     ["X0", "'cyclicAMI'", "boundary", "Periodic"] + SOLID_TYPES, []),
+    ("wedgePatch", ["system/blockMeshDict"] * 4,
+     [(r"(?s)vertices\s*\(.*?\);", WEDGE_VERTICES),
+      (r"\(\$N \$N \$N\)", "($N $N 1)"),
+      (r"Z0 \{ type patch;", "Z0 { type wedge;"),
+      (r"Z1 \{ type patch;", "Z1 { type wedge;")],
+     ["Z0", "'wedge'", "boundary", "Axisymmetric", "symmetricPlane",
+      "sector"] + SOLID_TYPES, [["blockMesh"]]),
+    ("emptyTwoCells", ["system/blockMeshDict"] * 3,
+     [(r"\(\$N \$N \$N\)", "($N $N 2)"),
+      (r"Z0 \{ type patch;", "Z0 { type empty;"),
+      (r"Z1 \{ type patch;", "Z1 { type empty;")],
+     ["empty", "one cell thick", "boundary"],
+     [["blockMesh"], [cases.PYTHON, "initialise.py"]]),
+]
+
+
+def check(root, label, path, edit, words, commands=()):
     # limitedLinear, so that the limiter is read
     case = cases.prepare("swingingCube", os.path.join(root, label), n=4,
                          touch={"reconstruction": "limitedLinear"})
@@ -178,6 +246,8 @@ def check(root, label, path, edit, words):
                                  % (label, one_path))
         with open(target, "w") as f:
             f.write(new)
+    for command in commands:
+        run.run(command, case)
     log = os.path.join(case, "log.touchFoam")
     with open(log, "w") as f:
         status = subprocess.call(["touchFoam"], cwd=case, stdout=f,
@@ -186,6 +256,10 @@ def check(root, label, path, edit, words):
         output = f.read()
     if status == 0:
         return "%s: touchFoam accepted the mistake (see %s)" % (label, log)
+    if status < 0 or status > 128 or "sigSegv" in output \
+            or "printStack" in output:
+        return "%s: touchFoam stopped with status %d or a stack trace, " \
+            "not an error message (see %s)" % (label, status, log)
     missing = [w for w in words if w not in output]
     if missing:
         return "%s: the error does not name %s (see %s)" % (
@@ -200,7 +274,7 @@ def check(root, label, path, edit, words):
 def body():
     root = testing.work_dir(NAME)
     refused, failures = [], []
-    for mistake in MISTAKES:
+    for mistake in MISTAKES + PATCH_TYPES:
         failure = check(root, *mistake)
         print("  %-26s %s" % (mistake[0], failure or "refused"))
         if failure:
@@ -209,7 +283,8 @@ def body():
             refused.append(mistake[0])
     if failures:
         raise AssertionError("%d of %d mistakes not refused properly: %s"
-                             % (len(failures), len(MISTAKES),
+                             % (len(failures),
+                                len(MISTAKES) + len(PATCH_TYPES),
                                 "; ".join(failures)))
     return "%d mistakes refused with file, entry and valid choices: %s" % (
         len(refused), " ".join(refused))

@@ -139,6 +139,10 @@ int main(int argc, char *argv[])
         }
     }
 
+    // Before the fields are read: a patch type the solid cannot use is
+    // named with what to use instead
+    touchSolid::checkPatchTypes(mesh);
+
     touchSolid solid(mesh);
 
     const label maxSteps = maxStepsEntry.read(runTime.controlDict());

@@ -10,9 +10,37 @@ License
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+Foam::symmTensor Foam::angularMomentum::rotationAxes(const fvMesh& mesh)
+{
+    if (mesh.nSolutionD() == 3)
+    {
+        return symmTensor::I;
+    }
+
+    // The empty directions: a 2D mesh turns about its one, a 1D mesh about
+    // none of its two (a turn about the line moves nothing)
+    symmTensor axes(Zero);
+    if (mesh.nSolutionD() == 2)
+    {
+        const Vector<label>& solutionD = mesh.solutionD();
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (solutionD[d] < 0)
+            {
+                vector e(Zero);
+                e[d] = 1;
+                axes = sqr(e);
+            }
+        }
+    }
+    return axes;
+}
+
+
 Foam::angularMomentum::angularMomentum(const fvMesh& mesh)
 :
-    V_(mesh.V())
+    V_(mesh.V()),
+    axes_(rotationAxes(mesh))
 {}
 
 
@@ -86,9 +114,19 @@ Foam::angularMomentum::rigidMoments Foam::angularMomentum::moments
     m.volume = volume;
     m.xbar = moment/volume;
 
-    // J = sum V (|d|^2 I - d d) about the centroid
+    // J = sum V (|d|^2 I - d d) about the centroid; on a 2D mesh the
+    // inverse of its part about the plane's normal e, e e/(e.J.e)
     const symmTensor dd(second - volume*sqr(m.xbar));
-    m.Jinv = inv(symmTensor(tr(dd)*symmTensor::I - dd));
+    const symmTensor J(tr(dd)*symmTensor::I - dd);
+    if (axes_ == symmTensor::I)
+    {
+        m.Jinv = inv(J);
+    }
+    else
+    {
+        const scalar Jaxis = axes_ && J;
+        m.Jinv = Jaxis > 0 ? axes_/Jaxis : symmTensor(Zero);
+    }
 
     return m;
 }

@@ -7,6 +7,7 @@ License
 
 #include "kinematicPointConstraints.H"
 #include "syncTools.H"
+#include "emptyPolyPatch.H"
 
 // * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -156,6 +157,7 @@ Foam::kinematicPointConstraints::kinematicPointConstraints(const fvMesh& mesh)
     declaredFree_(mesh.boundary().size()),
     declaredVelocity_(mesh.boundary().size()),
     declaredNow_(mesh.boundary().size(), false),
+    permanent_(mesh.boundary().size(), false),
     changed_(false),
     nActive_(0),
     activeIndex_(mesh.nPoints(), -1)
@@ -192,6 +194,38 @@ Foam::kinematicPointConstraints::kinematicPointConstraints(const fvMesh& mesh)
     activePoints_.setSize(boundaryPoints_.size());
     free_.setSize(boundaryPoints_.size());
     prescribed_.setSize(boundaryPoints_.size());
+
+    // The empty patches' faces, as a symmetric plane declares its own, with
+    // the coordinate axis of the face's normal (touchSolid refuses empty
+    // planes that are not normal to one): blockMesh leaves the points of a
+    // plane off it by round-off (z = 0.10000000000000002 of 0.1), and the
+    // faces' own normals then let the points move across by 1e-16 of
+    // their in-plane velocity
+    const vectorField& Sf = mesh.faceAreas();
+    forAll(mesh.boundaryMesh(), patchi)
+    {
+        const polyPatch& patch = mesh.boundaryMesh()[patchi];
+        if (isA<emptyPolyPatch>(patch))
+        {
+            const vectorField::subField S(patch.patchSlice(Sf));
+            tensorField free(S.size());
+            forAll(S, i)
+            {
+                const vector magS(cmptMag(S[i]));
+                const direction d =
+                    magS.x() >= max(magS.y(), magS.z())
+                  ? 0
+                  : (magS.y() >= magS.z() ? 1 : 2);
+                vector axis(Zero);
+                axis[d] = 1;
+                free[i] = tensor::I - sqr(axis);
+            }
+            declaredFree_.set(patchi, new tensorField(std::move(free)));
+            declaredVelocity_.set(patchi, new vectorField(S.size(), Zero));
+            permanent_[patchi] = true;
+            changed_ = true;
+        }
+    }
 }
 
 
@@ -244,7 +278,12 @@ void Foam::kinematicPointConstraints::finalise()
 {
     forAll(declaredFree_, patchi)
     {
-        if (declaredFree_.set(patchi) && !declaredNow_[patchi])
+        if
+        (
+            declaredFree_.set(patchi)
+         && !declaredNow_[patchi]
+         && !permanent_[patchi]
+        )
         {
             declaredFree_.set(patchi, nullptr);
             declaredVelocity_.set(patchi, nullptr);

@@ -79,7 +79,10 @@ void Foam::linearPointInterpolation::interpolate
 
     forAll(mesh_.boundary(), patchi)
     {
-        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+        // The polyPatch's cells: an empty patch's fvPatch has none, and as
+        // a mirror it reflects them
+        const labelUList& faceCells =
+            mesh_.boundaryMesh()[patchi].faceCells();
         const vectorField& w = reconstruction_.coupledWeights(patchi);
 
         if (reconstruction_.mirror(patchi))

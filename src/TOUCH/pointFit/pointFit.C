@@ -6,7 +6,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "pointFit.H"
-#include "emptyPolyPatch.H"
 #include "syncTools.H"
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
@@ -19,10 +18,13 @@ void Foam::pointFit::calcWeights()
     const faceList& faces = mesh_.faces();
     const labelListList& pointCells = mesh_.pointCells();
 
+    // The empty patches' faces too: a 2D mesh's points have the centres of
+    // their cells in one plane, and the fit across it needs the faces'
+    // values (the caller gives them as a symmetric plane's)
     DynamicList<label> boundaryFaces;
     for (const polyPatch& patch : mesh_.boundaryMesh())
     {
-        if (!patch.coupled() && !isA<emptyPolyPatch>(patch))
+        if (!patch.coupled())
         {
             forAll(patch, i)
             {

@@ -86,7 +86,12 @@ Foam::scalarList Foam::touchSolid::mirrorPatches
     forAll(lm.boundaryField(), patchi)
     {
         const fvPatchVectorField& pf = lm.boundaryField()[patchi];
-        if (isA<solidFluxFvPatchVectorField>(pf))
+        if (isA<emptyFvPatch>(pf.patch()))
+        {
+            // A 2D case is its one-cell slab between symmetric planes
+            signs[patchi] = 1;
+        }
+        else if (isA<solidFluxFvPatchVectorField>(pf))
         {
             const solidFluxFvPatchVectorField& condition =
                 refCast<const solidFluxFvPatchVectorField>(pf);
@@ -337,6 +342,8 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     E0_(0),
     Estage_(0)
 {
+    checkTwoD();
+
     if (mesh.time().value() == 0)
     {
         checkInitialVelocity();
@@ -499,6 +506,11 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
         {
             invalidCell_ = celli;
         }
+    }
+
+    if (mesh_.nSolutionD() < 3)
+    {
+        constrainEmptyDirections();
     }
 }
 

@@ -95,7 +95,9 @@ Foam::scalarField Foam::deformationUpdates::compatible::calcPointMobility
     // The area of a point, a third of the sum of its faces' shares (a
     // processor face counts half on each side, and so does a mirror's,
     // whose other side is the reflection: the whole body's point has
-    // twice the area and twice the nodal force): a plane wave's traction
+    // twice the area and twice the nodal force; an empty patch's faces
+    // count as a symmetric plane's, so that a 2D case is its one-cell
+    // slab between symmetric planes): a plane wave's traction
     // jump [[t]] on a hexahedral mesh gives f_a = [[t]] S_a, so that
     // w = f/(2 rho Up S_a) is the Riemann contact velocity [[t]]/(2 rho Up)
     scalarField area(mesh.nPoints(), Zero);
@@ -115,10 +117,6 @@ Foam::scalarField Foam::deformationUpdates::compatible::calcPointMobility
             )
             {
                 share *= 0.5;
-            }
-            else if (mesh.boundary()[patchi].size() == 0)
-            {
-                continue;
             }
         }
         for (const label pointi : faces[facei])

@@ -24,16 +24,15 @@ void Foam::deformationUpdates::compatible::reportWallForces()
     {
         const fvPatch& patch = mesh.boundary()[patchi];
 
-        if (patch.coupled())
+        // Not the coupled and empty patches
+        fvPatchVectorField& pf = faces_.lm().boundaryFieldRef()[patchi];
+        if (patch.coupled() || !isA<solidFluxFvPatchVectorField>(pf))
         {
             continue;
         }
 
         solidFluxFvPatchVectorField& condition =
-            refCast<solidFluxFvPatchVectorField>
-            (
-                faces_.lm().boundaryFieldRef()[patchi]
-            );
+            refCast<solidFluxFvPatchVectorField>(pf);
 
         // Every rank takes part (the sync), also one whose part of the
         // patch is empty

@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "riemannUpdate.H"
+#include "emptyPolyPatch.H"
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
@@ -66,6 +67,33 @@ void Foam::deformationUpdates::riemannUpdate::momentumRates
             }
         }
     );
+
+    // The empty patches' faces (2D) have the velocity a symmetric plane's
+    // flux gives them where the state is plane strain: the owner's, less
+    // its part along the plane's normal axis (exactly zero)
+    const fvMesh& mesh = faces_.mesh();
+    const vectorField& lm = faces_.lm().primitiveField();
+    for (const polyPatch& patch : mesh.boundaryMesh())
+    {
+        if (!isA<emptyPolyPatch>(patch))
+        {
+            continue;
+        }
+
+        const labelUList& faceCells = patch.faceCells();
+        forAll(faceCells, i)
+        {
+            const label facei = patch.start() + i;
+            const vector magS(cmptMag(mesh.faceAreas()[facei]));
+            const direction d =
+                magS.x() >= max(magS.y(), magS.z())
+              ? 0
+              : (magS.y() >= magS.z() ? 1 : 2);
+            vector v(lm[faceCells[i]]/rho);
+            v[d] = 0;
+            faceVelocity_[facei] = v;
+        }
+    }
 
     pointFit_.interpolate
     (

@@ -59,9 +59,9 @@ void Foam::linearReconstruction::calcWeights()
         inverseDistanceSqr_[facei] = 1/magSqr(d);
     }
 
-    forAll(mesh_.boundary(), patchi)
+    forAll(mesh_.boundaryMesh(), patchi)
     {
-        const fvPatch& patch = mesh_.boundary()[patchi];
+        const polyPatch& patch = mesh_.boundaryMesh()[patchi];
 
         if (patch.coupled() || mirror_[patchi])
         {
@@ -76,12 +76,14 @@ void Foam::linearReconstruction::calcWeights()
         }
     }
 
-    // Cells whose neighbours do not span space: add their boundary faces
+    // Cells whose neighbours do not span space: add their boundary faces.
+    // The faces of the polyPatches: an empty patch (2D) has no fvPatch
+    // faces, but its faces bound the cells as a symmetric plane's do
     label nRegularised = 0;
 
-    forAll(mesh_.boundary(), patchi)
+    forAll(mesh_.boundaryMesh(), patchi)
     {
-        const fvPatch& patch = mesh_.boundary()[patchi];
+        const polyPatch& patch = mesh_.boundaryMesh()[patchi];
 
         if (patch.coupled() || mirror_[patchi])
         {
@@ -114,9 +116,9 @@ void Foam::linearReconstruction::calcWeights()
     Minv_ = inv(M);
     const symmTensorField& Minv = Minv_;
 
-    forAll(mesh_.boundary(), patchi)
+    forAll(mesh_.boundaryMesh(), patchi)
     {
-        const fvPatch& patch = mesh_.boundary()[patchi];
+        const polyPatch& patch = mesh_.boundaryMesh()[patchi];
 
         if (patch.coupled() || mirror_[patchi])
         {
@@ -150,7 +152,8 @@ void Foam::linearReconstruction::reflectMirrorValues
 
         const vectorField& N = mirrorNormals_[patchi];
         const scalar sign = mirrorSign_[patchi];
-        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+        const labelUList& faceCells =
+            mesh_.boundaryMesh()[patchi].faceCells();
         vectorField& pR = pNeighbour_[patchi];
         tensorField& PR = PNeighbour_[patchi];
 
@@ -224,9 +227,13 @@ Foam::linearReconstruction::linearReconstruction
         }
     }
 
-    forAll(mesh.boundary(), patchi)
+    // The polyPatches' sizes and faces throughout: an empty patch (2D) has
+    // no fvPatch faces, yet its faces are the cells' faces, and as a mirror
+    // (symmetricPlanes mirror) they are a symmetric plane's
+    const vectorField& Sf = mesh.faceAreas();
+    forAll(mesh.boundaryMesh(), patchi)
     {
-        const fvPatch& patch = mesh.boundary()[patchi];
+        const polyPatch& patch = mesh.boundaryMesh()[patchi];
 
         SubList<label>
         (
@@ -241,13 +248,13 @@ Foam::linearReconstruction::linearReconstruction
             PNeighbour_.set(patchi, new tensorField(patch.size()));
         }
 
-        mirrorNormals_.set
-        (
-            patchi,
-            mirror_[patchi]
-          ? new vectorField(patch.nf())
-          : new vectorField()
-        );
+        // The unit normals as fvPatch::nf() forms them, S_f/|S_f|
+        mirrorNormals_.set(patchi, new vectorField());
+        if (mirror_[patchi])
+        {
+            const vectorField::subField S(patch.patchSlice(Sf));
+            mirrorNormals_[patchi] = S/mag(S);
+        }
     }
 
     Info<< "Reconstruction " << description().c_str() << endl;
@@ -281,7 +288,7 @@ Foam::linearReconstruction::linearReconstruction
         // face's neighbour is the cell's reflection in the face's plane
         forAll(mesh.boundary(), patchi)
         {
-            const fvPatch& patch = mesh.boundary()[patchi];
+            const polyPatch& patch = mesh.boundaryMesh()[patchi];
             const bool coupled = patch.coupled();
 
             neighbourCentres_.set
@@ -297,10 +304,10 @@ Foam::linearReconstruction::linearReconstruction
 
             if (mirror_[patchi])
             {
-                const vectorField Xc(patch.patchInternalField(X()));
+                const vectorField Xc(X(), patch.faceCells());
                 const vectorField& N = mirrorNormals_[patchi];
                 neighbourCentres_[patchi] =
-                    Xc + 2*((patch.Cf() - Xc) & N)*N;
+                    Xc + 2*((patch.faceCentres() - Xc) & N)*N;
             }
 
             coupledWeights_.set

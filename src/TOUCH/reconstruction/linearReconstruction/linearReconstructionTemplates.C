@@ -156,7 +156,7 @@ void Foam::linearReconstruction::updateCells
                 {
                     continue;
                 }
-                const label i = facei - mesh_.boundary()[patchi].start();
+                const label i = facei - mesh_.boundaryMesh()[patchi].start();
                 w = coupledWeights_[patchi][i];
                 pOther = &pNeighbour_[patchi][i];
                 POther = &PNeighbour_[patchi][i];
