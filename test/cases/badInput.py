@@ -179,7 +179,7 @@ SOLID_TYPES = ["symmetricPlane", "skewSymmetricPlane", "traction"]
 PATCH_TYPES = [
     ("symmetryPlanePatch", BOUNDARY,
      boundary_type([("X0", "")], "symmetryPlane;"),
-     ["X0", "'symmetryPlane'", "boundary", "symmetricPlane", "lm"]
+     ["X0", "'symmetryPlane'", "boundary", "symmetricPlane", "U"]
      + SOLID_TYPES, []),
     ("symmetryPlaneBoth", [BOUNDARY, "0/U", "0/U"],
      boundary_type([("X0", "")], "symmetryPlane;")

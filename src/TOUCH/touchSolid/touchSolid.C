@@ -7,6 +7,7 @@ License
 
 #include "touchSolid.H"
 #include "declaredEntry.H"
+#include "emptyFvPatch.H"
 #include "calculatedFvPatchFields.H"
 #include "calculatedPointPatchFields.H"
 #include "Switch.H"
