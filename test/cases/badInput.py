@@ -210,7 +210,7 @@ PATCH_TYPES = [
       (r"Z0 \{ type patch;", "Z0 { type empty;"),
       (r"Z1 \{ type patch;", "Z1 { type empty;")],
      ["empty", "one cell thick", "boundary"],
-     [["blockMesh"], [cases.PYTHON, "initialise.py"]]),
+     [["blockMesh"], ["cp", "0.orig/F", "0/F"], ["setExprFields"]]),
 ]
 
 

@@ -236,8 +236,13 @@ def restart_check(root, base, straight, steps, restart_step, state,
                             "back could not be seen")
 
     def drop_contact(case):
+        # foamDictionary rewrites lm at its own precision: the velocity
+        # written beside it no longer agrees, so it goes (lm is read)
         run.foam_set(case, os.path.join(mid, "lm"),
                      "boundaryField/%s/contact" % WALL, "uniform 0")
+        velocity = os.path.join(case, mid, "U")
+        if os.path.exists(velocity):
+            os.remove(velocity)
     text, differs = difference(
         restarted("restartWithoutContact", drop_contact, control=True),
         ("lm",))

@@ -6,7 +6,8 @@ License
 
 Description
     The mesh's patch types: which the solid refuses, the checks of a 2D
-    mesh (empty patches) and its plane strain.
+    mesh (empty patches) and its plane strain, and which patches are
+    mirrors (symmetricPlanes mirror).
 
 \*---------------------------------------------------------------------------*/
 
@@ -17,6 +18,8 @@ Description
 #include "symmetryPlanePolyPatch.H"
 #include "processorCyclicPolyPatch.H"
 #include "syncTools.H"
+#include "declaredEntry.H"
+#include "emptyFvPatch.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -60,7 +63,64 @@ static string patchTypeAdvice(const polyPatch& patch)
 } // End namespace Foam
 
 
+// * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    static const declaredEntry<word> symmetricPlanesEntry
+    (
+        "system/fvSolution TOUCH", "symmetricPlanes",
+        "symmetric and skew-symmetric planes as one-sided boundaries or as"
+        " mirrors (gradients, limiter and point motion see each cell's"
+        " reflection)",
+        "-", word("oneSided"), entryLimits::oneOf({"oneSided", "mirror"})
+    );
+}
+
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+
+bool Foam::touchSolid::readMirrorPlanes(const dictionary& controls)
+{
+    return symmetricPlanesEntry.read(controls) == "mirror";
+}
+
+
+Foam::scalarList Foam::touchSolid::mirrorPatches
+(
+    const volVectorField& lm,
+    const bool mirrorPlanes
+)
+{
+    scalarList signs(lm.boundaryField().size(), scalar(0));
+    if (!mirrorPlanes)
+    {
+        return signs;
+    }
+
+    forAll(lm.boundaryField(), patchi)
+    {
+        const fvPatchVectorField& pf = lm.boundaryField()[patchi];
+        if (isA<emptyFvPatch>(pf.patch()))
+        {
+            // A 2D case is its one-cell slab between symmetric planes
+            signs[patchi] = 1;
+        }
+        else if (isA<solidFluxFvPatchVectorField>(pf))
+        {
+            const solidFluxFvPatchVectorField& condition =
+                refCast<const solidFluxFvPatchVectorField>(pf);
+            if (condition.mirror())
+            {
+                signs[patchi] = condition.mirrorSign();
+            }
+        }
+    }
+
+    return signs;
+}
+
 
 void Foam::touchSolid::checkPatchTypes(const fvMesh& mesh)
 {

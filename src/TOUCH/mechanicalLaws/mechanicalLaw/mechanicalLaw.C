@@ -43,6 +43,31 @@ namespace Foam
 }
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- The law's entries under the name of constant/mechanicalProperties, so
+//  that an error names the file also for a dictionary made in code (unit
+//  tests), which has none
+static dictionary asMechanicalProperties
+(
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+{
+    dictionary named(dict);
+    if (named.name().empty())
+    {
+        named.name() = mesh.time().constant()/"mechanicalProperties";
+    }
+    return named;
+}
+
+} // End namespace Foam
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::mechanicalLaw::mechanicalLaw
@@ -61,7 +86,7 @@ Foam::mechanicalLaw::mechanicalLaw
             IOobject::NO_READ,
             IOobject::NO_WRITE
         ),
-        dict
+        asMechanicalProperties(mesh, dict)
     ),
     mesh_(mesh),
     rho_(rhoEntry.read(*this)),
