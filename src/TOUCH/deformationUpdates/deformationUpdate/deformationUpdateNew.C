@@ -12,15 +12,6 @@ License
 
 namespace Foam
 {
-    //- The names of the selection table
-    static wordList deformationUpdateChoices()
-    {
-        return
-            deformationUpdate::dictionaryConstructorTablePtr_
-          ? deformationUpdate::dictionaryConstructorTablePtr_->sortedToc()
-          : wordList();
-    }
-
     static const declaredEntry<word> FUpdateEntry
     (
         "system/fvSolution TOUCH", "FUpdate",
@@ -28,7 +19,7 @@ namespace Foam
         " (compatible) or from the faces' Riemann velocities (constrained,"
         " plain)",
         "-", word("compatible"),
-        entryLimits::selectedFrom(&deformationUpdateChoices)
+        entryLimits::selectedFrom(&entryLimits::tableNames<deformationUpdate>)
     );
 }
 

@@ -13,19 +13,11 @@ License
 
 namespace Foam
 {
-    //- The names of the selection table
-    static wordList mechanicalLawChoices()
-    {
-        return
-            mechanicalLaw::dictionaryConstructorTablePtr_
-          ? mechanicalLaw::dictionaryConstructorTablePtr_->sortedToc()
-          : wordList();
-    }
-
     static const declaredEntry<word> modelEntry
     (
-        "constant/mechanicalProperties", "model", "the constitutive law", "-", word("neoHookean"),
-        entryLimits::selectedFrom(&mechanicalLawChoices),
+        "constant/mechanicalProperties", "model", "the constitutive law",
+        "-", word("neoHookean"),
+        entryLimits::selectedFrom(&entryLimits::tableNames<mechanicalLaw>),
         declaredEntry<word>::required
     );
 }

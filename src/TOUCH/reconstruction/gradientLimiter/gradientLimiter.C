@@ -21,21 +21,12 @@ namespace Foam
 
 namespace Foam
 {
-    //- The names of the selection table
-    static wordList gradientLimiterChoices()
-    {
-        return
-            gradientLimiter::dictionaryConstructorTablePtr_
-          ? gradientLimiter::dictionaryConstructorTablePtr_->sortedToc()
-          : wordList();
-    }
-
     static const declaredEntry<word> limiterEntry
     (
         "system/fvSolution TOUCH", "limiter",
         "reconstruction limitedLinear: the gradient limiter",
         "-", word("BarthJespersen"),
-        entryLimits::selectedFrom(&gradientLimiterChoices),
+        entryLimits::selectedFrom(&entryLimits::tableNames<gradientLimiter>),
         declaredEntry<word>::required
     );
 }

@@ -12,20 +12,12 @@ License
 
 namespace Foam
 {
-    //- The names of the selection table
-    static wordList riemannSolverChoices()
-    {
-        return
-            riemannSolver::dictionaryConstructorTablePtr_
-          ? riemannSolver::dictionaryConstructorTablePtr_->sortedToc()
-          : wordList();
-    }
-
     static const declaredEntry<word> riemannSolverEntry
     (
         "system/fvSolution TOUCH", "riemannSolver",
         "the face flux: contact momentum and traction from the two states",
-        "-", word("acoustic"), entryLimits::selectedFrom(&riemannSolverChoices),
+        "-", word("acoustic"),
+        entryLimits::selectedFrom(&entryLimits::tableNames<riemannSolver>),
         declaredEntry<word>::required
     );
 }
