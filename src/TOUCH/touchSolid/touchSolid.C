@@ -66,55 +66,6 @@ Foam::tmp<Foam::vectorField> Foam::touchSolid::cellPositions
 }
 
 
-template<class GeoField>
-Foam::tmp<GeoField> Foam::touchSolid::readDisplacement
-(
-    const typename GeoField::Mesh& mesh,
-    const word& name,
-    const word& oldName
-)
-{
-    const objectRegistry& db = mesh.thisDb();
-
-    // Not registered: the state's own field takes the name
-    IOobject io
-    (
-        name, db.time().timeName(), db,
-        IOobject::MUST_READ, IOobject::NO_WRITE, false
-    );
-
-    if (!io.typeHeaderOk<GeoField>(true))
-    {
-        IOobject oldIo
-        (
-            oldName, db.time().timeName(), db,
-            IOobject::MUST_READ, IOobject::NO_WRITE, false
-        );
-
-        if (!oldIo.typeHeaderOk<GeoField>(true))
-        {
-            io.readOpt() = IOobject::NO_READ;
-            return tmp<GeoField>::New
-            (
-                io,
-                mesh,
-                dimensionedVector("0", dimLength, Zero),
-                GeoField::Patch::calculatedType()
-            );
-        }
-
-        Info<< "touchSolid: no " << name << " at time "
-            << db.time().timeName() << ": the displacement is read from "
-            << oldName << ", its former name, and written as " << name
-            << endl;
-
-        io = oldIo;
-    }
-
-    return tmp<GeoField>::New(io, mesh);
-}
-
-
 void Foam::touchSolid::computeRates(const label stage)
 {
     // Neighbour values across processor patches, then the stress and the
