@@ -5,7 +5,8 @@ the side of its cut planes, at the seed's times (figure 6, read as 30, 60,
 
     xvfb-run -a pvbatch render.py
 
-Writes pressure_<t>us.png.
+Writes pressure_<t>us.png and contact_<t>us.png (the wall patch seen from
+below: its faces in contact red, the others blue).
 """
 
 # The touchfoam package: bin/python, on PYTHONPATH after etc/bashrc
@@ -19,4 +20,5 @@ render_deformed(
     view=(-1, 0.3, -1),                         # facing the cut planes
     wall=((0, 0, 0), (0, 1, 0), 0.008),
     size=(700, 1000),
+    contact=("wall", (0, -1, 0), (0, 0, 1)),    # the end, from below
 )

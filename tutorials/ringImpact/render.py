@@ -5,7 +5,8 @@ seed's mesh study, figure 8).  Run in the case by Allrun:
 
     xvfb-run -a pvbatch render.py
 
-Writes pressure_<t>ms.png.
+Writes pressure_<t>ms.png and contact_<t>ms.png (the wall patch seen from
+below: its faces in contact red, the others blue).
 """
 
 # The touchfoam package: bin/python, on PYTHONPATH after etc/bashrc
@@ -18,4 +19,5 @@ render_deformed(
     time_unit="ms",
     view=(0, 0, 1),
     wall=((0, -0.044, 0), (0, 1, 0), 0.06),
+    contact=("wall", (0, -1, 0.3), (0, 0, 1)),  # the strip, from below
 )

@@ -6,7 +6,9 @@ the case by Allrun:
 
     xvfb-run -a pvbatch render.py
 
-Writes pressure_<t>us.png, sigmaEq_<t>us.png and epsilonP_<t>us.png.
+Writes pressure_<t>us.png, sigmaEq_<t>us.png, epsilonP_<t>us.png and
+contact_<t>us.png (the wall patch seen from below: its faces in contact
+red, the others blue).
 """
 
 # The touchfoam package: bin/python, on PYTHONPATH after etc/bashrc
@@ -22,4 +24,5 @@ render_deformed(
     view=(-1, 0.3, -1),                         # facing the cut planes
     wall=((0, 0, 0), (0, 1, 0), 0.008),
     size=(700, 1000),
+    contact=("wall", (0, -1, 0), (0, 0, 1)),    # the foot, from below
 )

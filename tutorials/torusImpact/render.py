@@ -4,7 +4,8 @@ times (figure 10: 2, 4, 8, 17, 28, 38 ms).  Run in the case by Allrun:
 
     xvfb-run -a pvbatch render.py
 
-Writes pressure_<t>ms.png.
+Writes pressure_<t>ms.png and contact_<t>ms.png (the wall patch seen from
+below: its faces in contact red, the others blue).
 """
 
 # The touchfoam package: bin/python, on PYTHONPATH after etc/bashrc
@@ -17,4 +18,5 @@ render_deformed(
     time_unit="ms",
     view=(0.6, 0.35, 1),
     wall=((0, -0.044, 0), (0, 1, 0), 0.06),
+    contact=("wall", (0, -1, 0), (0, 0, 1)),    # the footprint, from below
 )

@@ -1,15 +1,22 @@
-"""Pictures and plots of the impact tutorials (taylorImpact, barRebound,
-ringImpact, torusImpact).
+"""Pictures and plots of the tutorials (taylorImpact, barRebound,
+ringImpact, torusImpact; pictures of twistingColumn too).
 
 Pictures, in ParaView's pvbatch (the tutorials' render.py, run in the case
 as 'xvfb-run -a pvbatch render.py'):
 
     render_deformed   the deformed shape (the mesh warped by pointD) coloured
                       by cell fields, one PNG per field and time, with the
-                      rigid wall drawn and one colour range per field for
-                      all the times: the 1st to 99th percentile of the
+                      rigid wall drawn, one colour range per field for
+                      all the times (the 1st to 99th percentile of the
                       cell values, so that a few extreme cells do not hide
-                      the body
+                      the body) and one camera for all the times (the
+                      body's size and motion compare between pictures);
+                      optionally the contact state of a rigidWall patch
+                      seen from behind the wall, one PNG per time
+
+    picture_colours   what a picture shows, for the tests: its size, the
+                      share of its pixels in colour (neither white, grey
+                      nor black) and those pixels' hues, in twelve bins
 
 Plots, with matplotlib (the tutorials' plot.py):
 
@@ -59,9 +66,53 @@ def _cell_values(proxy, field):
     return np.asarray(array)
 
 
+def _frame(view_, bounds, direction, up, size, parallel=False):
+    """Point the camera of view_ along -direction at the box bounds
+    (xmin, xmax, ymin, ymax, zmin, zmax).  In perspective 5 % further
+    than the distance that fits the box's bounding sphere in the view angle
+    (ParaView's ResetCamera, for the visible props; here the wall slab is
+    left out); in parallel projection with the box's extent across the view
+    filling 90 % of the picture (its depth along the view does not count:
+    a footprint seen from behind the wall fills the picture however far
+    the body moved along the normal)."""
+    box = np.reshape(bounds, (3, 2))
+    centre = box.mean(axis=1)
+    radius = 0.5 * np.linalg.norm(box[:, 1] - box[:, 0])
+    direction = np.asarray(direction, float)
+    direction = direction / np.linalg.norm(direction)
+    up = np.asarray(up, float)
+    up = up - np.dot(up, direction) * direction
+    up = up / np.linalg.norm(up)
+    angle = np.radians(view_.CameraViewAngle)
+    distance = 1.05 * radius / np.sin(0.5 * angle)
+    view_.CameraParallelProjection = int(parallel)
+    if parallel:
+        corners = np.array([[x, y, z] for x in box[0] for y in box[1]
+                            for z in box[2]]) - centre
+        right = np.cross(direction, up)
+        height = np.ptp(corners @ up)
+        width = np.ptp(corners @ right)
+        aspect = float(size[0]) / size[1]
+        view_.CameraParallelScale = 0.5 * max(height, width / aspect) / 0.9
+    view_.CameraFocalPoint = list(centre)
+    view_.CameraPosition = list(centre + distance * direction)
+    view_.CameraViewUp = list(up)
+    view_.CenterOfRotation = list(centre)
+
+
+def _union_bounds(proxy, times):
+    """Bounds of proxy's output over the times."""
+    lo, hi = np.full(3, np.inf), np.full(3, -np.inf)
+    for t in times:
+        proxy.UpdatePipeline(t)
+        b = np.reshape(proxy.GetDataInformation().GetBounds(), (3, 2))
+        lo, hi = np.minimum(lo, b[:, 0]), np.maximum(hi, b[:, 1])
+    return np.column_stack((lo, hi)).ravel()
+
+
 def render_deformed(fields, times, time_unit, view, up=(0, 1, 0),
                     wall=None, case=".", size=(900, 900), titles=None,
-                    percentiles=(1, 99)):
+                    percentiles=(1, 99), contact=None):
     """PNG pictures <field>_<time>.png of the deformed body.
 
     fields       cell fields to colour by ('pressure', 'epsilonP', ...);
@@ -76,6 +127,11 @@ def render_deformed(fields, times, time_unit, view, up=(0, 1, 0),
     titles       {field: colour bar title}
     percentiles  the colour range of a field: these percentiles of its cell
                  values over all the times shown
+    contact      (patch, view, up) of a rigidWall patch, or None: pictures
+                 contact_<time>.png of that patch, warped by pointD, its
+                 faces in contact (the field contact = 1) red and the
+                 others blue, seen along view (from behind the wall:
+                 the footprint on it)
     """
     from paraview import simple as pv
 
@@ -132,6 +188,9 @@ def render_deformed(fields, times, time_unit, view, up=(0, 1, 0),
     label_display.FontSize = 14
     label_display.Color = [0, 0, 0]
 
+    # One camera for all the times: the body's size and motion compare
+    bounds = _union_bounds(body, chosen)
+
     written_files = []
     for field in shown:
         # One range for all the times shown, from the bulk of the values
@@ -161,12 +220,7 @@ def render_deformed(fields, times, time_unit, view, up=(0, 1, 0),
             view_.ViewTime = t
             body.UpdatePipeline(t)
             label.Text = "t = %s" % time_label(t, time_unit)
-            focus = np.mean(np.reshape(body.GetDataInformation()
-                                       .GetBounds(), (3, 2)), axis=1)
-            view_.CameraFocalPoint = list(focus)
-            view_.CameraPosition = list(focus + np.asarray(view, float))
-            view_.CameraViewUp = list(up)
-            view_.ResetCamera()
+            _frame(view_, bounds, view, up, size)
             name = "%s_%s.png" % (
                 field, time_label(t, time_unit).replace(" ", ""))
             pv.SaveScreenshot(os.path.join(case, name), view_,
@@ -174,7 +228,105 @@ def render_deformed(fields, times, time_unit, view, up=(0, 1, 0),
             written_files.append(name)
             print("render: wrote %s (%s in [%.4g, %.4g], percentiles %s)"
                   % (name, field, lo, hi, percentiles))
+
+    if contact is not None:
+        pv.Hide(body, view_)
+        if wall is not None:
+            pv.Hide(slab, view_)
+        written_files += _render_contact(pv, foam, contact, chosen,
+                                         time_unit, view_, label, case,
+                                         size)
     return written_files
+
+
+def _render_contact(pv, foam, contact, chosen, time_unit, view_, label,
+                    case, size):
+    """contact_<time>.png: the rigidWall patch coloured by contact (see
+    render_deformed)."""
+    patch, direction, up = contact
+    reader = pv.OpenFOAMReader(FileName=foam)
+    reader.UpdatePipelineInformation()
+    regions = reader.GetProperty("PatchArrayInfo")[::2]
+    if "patch/" + patch not in regions:
+        print("render: no patch '%s' in the case (patches: %s), contact "
+              "skipped" % (patch, " ".join(r for r in regions
+                                          if r.startswith("patch/"))))
+        return []
+    if "contact" not in reader.GetProperty("CellArrayInfo")[::2]:
+        print("render: no field 'contact' in the case (no rigidWall "
+              "patch), contact skipped")
+        return []
+    reader.MeshRegions = ["patch/" + patch]
+    reader.CellArrays = ["contact"]
+    reader.PointArrays = ["pointD"]
+    surface = pv.WarpByVector(Input=reader)
+    surface.Vectors = ["POINTS", "pointD"]
+    display = pv.Show(surface, view_)
+    pv.ColorBy(display, ("CELLS", "contact"))
+    lut = pv.GetColorTransferFunction("contact")
+    # Two colours: 0 (free) blue, 1 (in contact) red
+    lut.InterpretValuesAsCategories = 1
+    lut.Annotations = ["0", "free", "1", "in contact"]
+    lut.IndexedColors = [0.23, 0.30, 0.75, 0.71, 0.02, 0.15]
+    display.SetScalarBarVisibility(view_, True)
+    bar = pv.GetScalarBar(lut, view_)
+    bar.Title = "contact on patch %s" % patch
+    bar.ComponentTitle = ""
+    bar.TitleColor = [0, 0, 0]
+    bar.LabelColor = [0, 0, 0]
+
+    bounds = _union_bounds(surface, chosen)
+    written = []
+    for t in chosen:
+        view_.ViewTime = t
+        surface.UpdatePipeline(t)
+        faces = _cell_values(surface, "contact")
+        label.Text = "t = %s: %d of %d faces of %s in contact" % (
+            time_label(t, time_unit), int(np.sum(faces > 0.5)), len(faces),
+            patch)
+        _frame(view_, bounds, direction, up, size, parallel=True)
+        name = "contact_%s.png" % time_label(t, time_unit).replace(" ", "")
+        pv.SaveScreenshot(os.path.join(case, name), view_,
+                          ImageResolution=list(size))
+        written.append(name)
+        print("render: wrote %s (%d of %d faces of patch %s in contact)"
+              % (name, int(np.sum(faces > 0.5)), len(faces), patch))
+    return written
+
+
+def picture_colours(path, margins=(0.05, 0.2)):
+    """{'size': (width, height), 'coloured': share, 'hues': [12 shares]}
+    of a PNG (read with VTK, so in pvbatch or pvpython).
+
+    The colour bar and the time label are left out: the top margins[0] of
+    the height and the right margins[1] of the width.  A pixel is in
+    colour when its largest and smallest channels differ by more than 60
+    of 255 (the white background, the grey wall and the black text are
+    not); its hue (0 red, 1/3 green, 2/3 blue) falls in one of twelve
+    bins, each bin's share of the picture given."""
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+
+    reader = vtk.vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    width, height, _ = image.GetDimensions()
+    scalars = image.GetPointData().GetScalars()
+    rgb = vtk_to_numpy(scalars).reshape(height, width, -1)[:, :, :3]
+    rgb = rgb[::-1].astype(float) / 255                 # top row first
+    rgb = rgb[int(margins[0] * height):, :int((1 - margins[1]) * width)]
+    hi, lo = rgb.max(axis=2), rgb.min(axis=2)
+    chroma = hi - lo
+    coloured = chroma > 60.0 / 255
+    r, g, b = (rgb[:, :, i][coloured] for i in range(3))
+    c, m = chroma[coloured], hi[coloured]
+    hue = np.where(m == r, ((g - b) / c) % 6,
+                   np.where(m == g, (b - r) / c + 2, (r - g) / c + 4)) / 6
+    bins = np.histogram(hue, bins=12, range=(0, 1))[0]
+    total = float(rgb.shape[0] * rgb.shape[1])
+    return {"size": (width, height), "coloured": coloured.sum() / total,
+            "hues": list(bins / total)}
 
 
 # -- data for the plots --------------------------------------------------------
