@@ -164,7 +164,8 @@ def check_summary(text, case, cells, law_extra=()):
              "angular momentum preservation %s"
              % switch[touch["angularMomentumPreservation"]]]
     if touch["reconstruction"] == "limitedLinear":
-        words.append("(limiter %s)" % touch["limiter"])
+        words.append("(limiter %s)"
+                     % touch["limitedLinearCoeffs"]["limiter"])
     missing = [w for w in words if w not in s["scheme"]]
     if missing:
         raise AssertionError("summary: scheme lacks %s: %s"
@@ -326,8 +327,11 @@ def plastic_parallel(root, args, cells):
     extra = {"yieldStress": 2e6, "hardeningModulus": 1e5}
     run.foam_set(case, "constant/mechanicalProperties", "model",
                  "vonMisesPlastic")
+    run.foam_set(case, "constant/mechanicalProperties",
+                 "vonMisesPlasticCoeffs", "{}")
     for key, value in extra.items():
-        run.foam_set(case, "constant/mechanicalProperties", key, value)
+        run.foam_set(case, "constant/mechanicalProperties",
+                     "vonMisesPlasticCoeffs/" + key, value)
     run.run(["decomposePar", "-force"], case)
     run.run_parallel(["touchFoam"], case, 2, timeout=testing.RUN_TIMEOUT)
     with open(os.path.join(case, "log.touchFoam")) as f:
