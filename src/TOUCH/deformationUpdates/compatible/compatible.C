@@ -548,6 +548,16 @@ Foam::deformationUpdates::compatible::compatible
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::deformationUpdates::compatible::writeOptions(Ostream& os) const
+{
+    os  << " (" << jumpShareEntry.name() << ' '
+        << (quadraticShare_ ? "quadratic" : "linear") << ", "
+        << pointUpwindingEntry.name() << ' ' << pointUpwinding_ << ", "
+        << pointLimiterEntry.name() << ' '
+        << (pointInterpolation_.limited() ? "on" : "off") << ')';
+}
+
+
 void Foam::deformationUpdates::compatible::rates
 (
     const label stage,
