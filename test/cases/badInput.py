@@ -25,7 +25,10 @@ On a 4^3 swinging cube, one mistake at a time:
   - model vonMisesPlastic with yieldStress 0, and with hardeningModulus -1,
   - a misspelt nodalAveraging (pressur), and nodalAveraging deformation
     with vonMisesPlastic (a law with state),
-  - a misspelt jumpShare (quadratc),
+  - a misspelt jumpShare (quadratc); jumpShare, limiter and yieldStress
+    written beside their owner's <model>Coeffs sub-dictionary (their place
+    before 2026-12-04: the error says where they moved); vonMisesPlastic
+    without vonMisesPlasticCoeffs,
   - a misspelt symmetricPlanes (mirorr),
   - 0/U with the dimensions of momentum, a 0/lm beside 0/U that disagrees
     with rho U, and neither 0/U nor 0/lm,
@@ -130,11 +133,13 @@ MISTAKES = [
      ["RK4", "fvSolution", "RK2", "RK3"]),
     ("yieldStress", "constant/mechanicalProperties",
      (r"model\s+\w+;",
-      "model vonMisesPlastic;\nyieldStress 0;\nhardeningModulus 1e5;"),
+      "model vonMisesPlastic;\n"
+      "vonMisesPlasticCoeffs { yieldStress 0; hardeningModulus 1e5; }"),
      ["'yieldStress'", "mechanicalProperties", "0 < yieldStress"]),
     ("hardeningModulus", "constant/mechanicalProperties",
      (r"model\s+\w+;",
-      "model vonMisesPlastic;\nyieldStress 1e4;\nhardeningModulus -1;"),
+      "model vonMisesPlastic;\n"
+      "vonMisesPlasticCoeffs { yieldStress 1e4; hardeningModulus -1; }"),
      ["'hardeningModulus'", "mechanicalProperties",
       "0 <= hardeningModulus"]),
     ("nodalAveraging", "system/fvSolution",
@@ -143,13 +148,31 @@ MISTAKES = [
     ("nodalAveragingLaw",
      ["constant/mechanicalProperties", "system/fvSolution"],
      [(r"model\s+\w+;",
-       "model vonMisesPlastic;\nyieldStress 1e4;\nhardeningModulus 0;"),
+       "model vonMisesPlastic;\n"
+       "vonMisesPlasticCoeffs { yieldStress 1e4; hardeningModulus 0; }"),
       (r"(CFL\s+[0-9.]+;)", r"\1\n    nodalAveraging deformation;")],
      ["'nodalAveraging deformation'", "fvSolution", "vonMisesPlastic",
       "nodalAveraging off"]),
     ("jumpShare", "system/fvSolution",
-     (r"(CFL\s+[0-9.]+;)", r"\1\n    jumpShare quadratc;"),
+     (r"(CFL\s+[0-9.]+;)",
+      r"\1\n    compatibleCoeffs { jumpShare quadratc; }"),
      ["quadratc", "fvSolution", "quadratic", "linear"]),
+    # A model's own entries left where they were before 2026-12-04
+    ("jumpShareMoved", "system/fvSolution",
+     (r"(CFL\s+[0-9.]+;)", r"\1\n    jumpShare linear;"),
+     ["'jumpShare'", "fvSolution", "compatibleCoeffs"]),
+    ("limiterMoved", "system/fvSolution",
+     (r"(CFL\s+[0-9.]+;)", r"\1\n    limiter BarthJespersen;"),
+     ["'limiter'", "fvSolution", "limitedLinearCoeffs"]),
+    ("yieldStressMoved", "constant/mechanicalProperties",
+     (r"model\s+\w+;",
+      "model vonMisesPlastic;\nyieldStress 1e4;\n"
+      "vonMisesPlasticCoeffs { yieldStress 1e4; hardeningModulus 0; }"),
+     ["'yieldStress'", "mechanicalProperties", "vonMisesPlasticCoeffs"]),
+    ("lawCoeffsMissing", "constant/mechanicalProperties",
+     (r"model\s+\w+;", "model vonMisesPlastic;"),
+     ["vonMisesPlasticCoeffs", "mechanicalProperties", "yieldStress",
+      "hardeningModulus"]),
     ("symmetricPlanes", "system/fvSolution",
      (r"symmetricPlanes\s+\w+;", "symmetricPlanes mirorr;"),
      ["mirorr", "fvSolution", "oneSided", "mirror"]),

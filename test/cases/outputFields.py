@@ -150,8 +150,9 @@ def check_values(end, case, m, lines, failures):
     props = foamfile.read_dict(os.path.join(case, "constant",
                                             "mechanicalProperties"))
     eps = field(end, "epsilonP", n)
-    flow = float(props["yieldStress"]) \
-        + float(props["hardeningModulus"]) * eps
+    coeffs = props["vonMisesPlasticCoeffs"]
+    flow = float(coeffs["yieldStress"]) \
+        + float(coeffs["hardeningModulus"]) * eps
     ratio = J * field(end, "sigmaEq", n) / flow
     plastic = int(np.count_nonzero(eps > 0))
     lines.append("J sigmaEq / (yieldStress + H epsilonP): max 1 %+.1e "

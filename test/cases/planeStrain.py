@@ -142,7 +142,7 @@ def make_case(root, label, empty, touch, thickness, end_time):
     case = os.path.join(root, label)
     run.copy_case(run.tutorial_dir("swingingCube"), case)
     for key, value in touch.items():
-        run.foam_set(case, "system/fvSolution", "TOUCH/" + key, value)
+        cases.set_touch(case, key, value)
     for key, value in dict(cases.precise_output(), endTime=end_time,
                            writeInterval=end_time).items():
         run.foam_set(case, "system/controlDict", key, value)

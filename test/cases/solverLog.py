@@ -42,7 +42,8 @@ the machine was busy.
 Also, on the same column with 20 steps: progressInterval -1 stops touchFoam
 naming the controlDict, the entry and the valid values; without the entry
 (default 10 s) a vonMisesPlastic column on 2 ranks (metis) gives the global
-cells, the law's own constants (yieldStress, hardeningModulus) and the
+cells, the law's own constants (yieldStress, hardeningModulus), the F
+update's own options (compatibleCoeffs, defaults included) and the
 default interval in its summary, no progress line, and its final line.
 Work folders: test/runs/solverLog/.
 """
@@ -129,6 +130,8 @@ def check_summary(text, case, cells, law_extra=()):
 
     mat = foamfile.read_dict(os.path.join(case, "constant",
                                           "mechanicalProperties"))
+    # The law's own entries, from its <model>Coeffs sub-dictionary
+    mat = dict(mat, **mat.get(mat["model"] + "Coeffs", {}))
     model, constants = s["mechanical law"].split(": ", 1)
     law = pairs(constants)
     if model != mat["model"]:
@@ -164,7 +167,19 @@ def check_summary(text, case, cells, law_extra=()):
              "angular momentum preservation %s"
              % switch[touch["angularMomentumPreservation"]]]
     if touch["reconstruction"] == "limitedLinear":
-        words.append("(limiter %s)" % touch["limiter"])
+        words.append("(limiter %s)"
+                     % touch["limitedLinearCoeffs"]["limiter"])
+    if touch.get("FUpdate", "compatible") == "compatible":
+        # Its own entries, in effect: given or defaults (the point limiter
+        # is on with limitedLinear unless set)
+        coeffs = touch.get("compatibleCoeffs", {})
+        limited = touch["reconstruction"] == "limitedLinear"
+        words.append("F update compatible (jumpShare %s, pointUpwinding %g,"
+                     " pointLimiter %s)"
+                     % (coeffs.get("jumpShare", "quadratic"),
+                        float(coeffs.get("pointUpwinding", 1)),
+                        switch[coeffs.get("pointLimiter",
+                                          "on" if limited else "off")]))
     missing = [w for w in words if w not in s["scheme"]]
     if missing:
         raise AssertionError("summary: scheme lacks %s: %s"
@@ -326,8 +341,11 @@ def plastic_parallel(root, args, cells):
     extra = {"yieldStress": 2e6, "hardeningModulus": 1e5}
     run.foam_set(case, "constant/mechanicalProperties", "model",
                  "vonMisesPlastic")
+    run.foam_set(case, "constant/mechanicalProperties",
+                 "vonMisesPlasticCoeffs", "{}")
     for key, value in extra.items():
-        run.foam_set(case, "constant/mechanicalProperties", key, value)
+        run.foam_set(case, "constant/mechanicalProperties",
+                     "vonMisesPlasticCoeffs/" + key, value)
     run.run(["decomposePar", "-force"], case)
     run.run_parallel(["touchFoam"], case, 2, timeout=testing.RUN_TIMEOUT)
     with open(os.path.join(case, "log.touchFoam")) as f:

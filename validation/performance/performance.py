@@ -82,8 +82,9 @@ VARIANTS = [
      {"pointUpwinding": 0}, {}, {}),
     ("plastic", "vonMisesPlastic, yieldStress 1e12 (never yields), "
      "hardeningModulus 0", {}, {},
-     {"model": "vonMisesPlastic", "yieldStress": 1e12,
-      "hardeningModulus": 0}),
+     {"model": "vonMisesPlastic",
+      "vonMisesPlasticCoeffs": {"yieldStress": 1e12,
+                                "hardeningModulus": 0}}),
     ("RK3", "timeScheme RK3", {"timeScheme": "RK3"}, {}, {}),
     ("constrained", "FUpdate constrained", {"FUpdate": "constrained"},
      {}, {}),
@@ -130,7 +131,7 @@ def variant_case(base, variant):
     os.symlink(os.path.join("..", "..", "mesh", "constant", "polyMesh"),
                os.path.join(dst, "constant", "polyMesh"))
     for key, value in touch.items():
-        run.foam_set(dst, "system/fvSolution", "TOUCH/" + key, value)
+        cases.set_touch(dst, key, value)
     for key, value in control.items():
         run.foam_set(dst, "system/controlDict", key, value)
     run.write_options(dst, "constant/materialOptions", material,

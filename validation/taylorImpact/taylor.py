@@ -248,8 +248,9 @@ def energy_budget(case, cells, folder):
     upwinding dissipated (a frictionless wall does no work)."""
     props = read_dict(os.path.join(case, "constant", "mechanicalProperties"))
     rho = float(props["rho"])
-    sigma_y0 = float(props["yieldStress"])
-    H = float(props["hardeningModulus"])
+    coeffs = props["vonMisesPlasticCoeffs"]
+    sigma_y0 = float(coeffs["yieldStress"])
+    H = float(coeffs["hardeningModulus"])
     V = cells.mesh.cell_volumes
     eps = cells.read(folder, "epsilonP")
     E0 = 0.5 * rho * V.sum() * V0 ** 2

@@ -38,7 +38,9 @@ dictionary controls(const word& scheme, const word& limiter)
 {
     dictionary dict;
     dict.add("reconstruction", scheme);
-    dict.add("limiter", limiter);
+    dictionary coeffs;
+    coeffs.add("limiter", limiter);
+    dict.add("limitedLinearCoeffs", coeffs);
     return dict;
 }
 

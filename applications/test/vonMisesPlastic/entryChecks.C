@@ -50,7 +50,8 @@ void Foam::plasticTest::checkEntries(const fvMesh& mesh, testReport& report)
     }
     {
         dictionary dict(material(sigmaY, H));
-        dict.add("yieldStressMeasure", "PK2");
+        dict.subDict("vonMisesPlasticCoeffs")
+            .add("yieldStressMeasure", "PK2");
         const string msg(errorMessage(dict));
         Info<< "    yieldStressMeasure PK2 gives: " << msg.c_str() << nl;
         report.check
@@ -64,12 +65,42 @@ void Foam::plasticTest::checkEntries(const fvMesh& mesh, testReport& report)
     }
     {
         dictionary dict(material(sigmaY, H));
-        dict.remove("yieldStress");
+        dict.subDict("vonMisesPlasticCoeffs").remove("yieldStress");
         const string msg(errorMessage(dict));
         report.check
         (
             "a missing yieldStress is refused naming it",
             msg.find("'yieldStress'") != string::npos
+        );
+    }
+    {
+        dictionary dict(material(sigmaY, H));
+        dict.remove("vonMisesPlasticCoeffs");
+        const string msg(errorMessage(dict));
+        Info<< "    no vonMisesPlasticCoeffs gives: " << msg.c_str() << nl;
+        report.check
+        (
+            "a missing vonMisesPlasticCoeffs is refused naming the file,"
+            " the sub-dictionary and its required entries",
+            msg.find("Missing sub-dictionary vonMisesPlasticCoeffs")
+         != string::npos
+         && msg.find("mechanicalProperties") != string::npos
+         && msg.find("yieldStress") != string::npos
+         && msg.find("hardeningModulus") != string::npos
+        );
+    }
+    {
+        // The place of the law's entries before 2026-12-04
+        dictionary dict(material(sigmaY, H));
+        dict.add("yieldStress", sigmaY);
+        const string msg(errorMessage(dict));
+        Info<< "    yieldStress beside model gives: " << msg.c_str() << nl;
+        report.check
+        (
+            "a yieldStress beside model is refused naming where it moved",
+            msg.find("'yieldStress'") != string::npos
+         && msg.find("vonMisesPlasticCoeffs") != string::npos
+         && msg.find("mechanicalProperties") != string::npos
         );
     }
 }

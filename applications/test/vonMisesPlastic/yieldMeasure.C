@@ -38,7 +38,8 @@ void Foam::plasticTest::checkYieldMeasure
         dictionary dict(material(sigmaY, H));
         if (cauchy)
         {
-            dict.add("yieldStressMeasure", "Cauchy");
+            dict.subDict("vonMisesPlasticCoeffs")
+                .add("yieldStressMeasure", "Cauchy");
         }
         autoPtr<mechanicalLaw> lawPtr(mechanicalLaw::New(mesh, dict));
         const vonMisesPlastic& law = refCast<const vonMisesPlastic>(*lawPtr);

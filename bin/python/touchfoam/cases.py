@@ -9,6 +9,7 @@ into 0/U and 0/F.
 """
 
 import os
+import re
 
 import numpy as np
 
@@ -142,6 +143,28 @@ def mesh_case(case, tutorial, n=None):
         run(["blockMesh"], case)
 
 
+#: The TOUCH entries of one model, read from its <model>Coeffs
+#: sub-dictionary of TOUCH (the owner named in doc/entries.md)
+TOUCH_COEFFS = {"jumpShare": "compatibleCoeffs",
+                "pointUpwinding": "compatibleCoeffs",
+                "pointLimiter": "compatibleCoeffs",
+                "limiter": "limitedLinearCoeffs"}
+
+
+def set_touch(case, key, value):
+    """Set an entry of system/fvSolution's TOUCH; a model's own entry
+    (TOUCH_COEFFS) goes to its Coeffs sub-dictionary, made when missing."""
+    path = "TOUCH/" + key
+    if key in TOUCH_COEFFS:
+        coeffs = TOUCH_COEFFS[key]
+        with open(os.path.join(case, "system", "fvSolution")) as f:
+            text = f.read()
+        if not re.search(r"\b%s\s*\{" % coeffs, text):
+            foam_set(case, "system/fvSolution", "TOUCH/" + coeffs, "{}")
+        path = "TOUCH/%s/%s" % (coeffs, key)
+    foam_set(case, "system/fvSolution", path, value)
+
+
 def prepare(tutorial, dst, n=None, nu=None, touch=None, control=None,
             initialise=True):
     """A meshed and initialised copy of tutorials/<tutorial> at dst.
@@ -151,7 +174,8 @@ def prepare(tutorial, dst, n=None, nu=None, touch=None, control=None,
              radius (taylorImpact, barRebound), around the ring or the
              tube (ringImpact, torusImpact): the Allruns' -n
     nu       Poisson's ratio override (constant/materialOptions)
-    touch    {entry: value} for fvSolution's TOUCH dictionary
+    touch    {entry: value} for fvSolution's TOUCH dictionary (a model's
+             own entries, TOUCH_COEFFS, go to its Coeffs sub-dictionary)
     control  {entry: value} for system/controlDict ('functions/solidMonitor/
              writePrecision' style paths allowed)
     """
@@ -159,7 +183,7 @@ def prepare(tutorial, dst, n=None, nu=None, touch=None, control=None,
     if nu is not None:
         write_options(dst, "constant/materialOptions", {"nu": nu})
     for key, value in (touch or {}).items():
-        foam_set(dst, "system/fvSolution", "TOUCH/" + key, value)
+        set_touch(dst, key, value)
     for key, value in (control or {}).items():
         foam_set(dst, "system/controlDict", key, value)
     restore0(dst)

@@ -122,7 +122,9 @@ void Foam::touchSolid::writeSummary(Ostream& os) const
         << ", CFL " << timeStep_.CFL() << nl
         << "                    " << rungeKutta_.name() << " ("
         << rungeKutta_.nStages() << "-stage SSP Runge-Kutta), F update "
-        << update_->type() << ", angular momentum preservation "
+        << update_->type();
+    update_->writeOptions(os);
+    os  << ", angular momentum preservation "
         << (preserveAngularMomentum_ ? "on" : "off")
         << ", nodal averaging "
         << (nodalAveraging_ ? nodalAveraging_->type() : word("off"))

@@ -7,6 +7,7 @@ License
 
 #include "compatible.H"
 #include "declaredEntry.H"
+#include "modelCoeffs.H"
 #include "syncTools.H"
 #include "Switch.H"
 #include "addToRunTimeSelectionTable.H"
@@ -69,24 +70,24 @@ namespace Foam
 {
     static const declaredEntry<word> jumpShareEntry
     (
-        "system/fvSolution TOUCH", "jumpShare",
-        "FUpdate compatible: the momentum upwinding damps phi^2 (quadratic)"
+        "system/fvSolution TOUCH/compatibleCoeffs", "jumpShare",
+        "the momentum upwinding damps phi^2 (quadratic)"
         " or phi (linear) of the cell jump, phi the limiter's share",
         "-", word("quadratic"), entryLimits::oneOf({"quadratic", "linear"})
     );
 
     static const declaredEntry<scalar> pointUpwindingEntry
     (
-        "system/fvSolution TOUCH", "pointUpwinding",
-        "FUpdate compatible: weight of the upwinding of the point"
+        "system/fvSolution TOUCH/compatibleCoeffs", "pointUpwinding",
+        "weight of the upwinding of the point"
         " velocities (0: off)",
         "-", 1, entryLimits::above(0, true)
     );
 
     static const declaredEntry<Switch> pointLimiterEntry
     (
-        "system/fvSolution TOUCH", "pointLimiter",
-        "FUpdate compatible: limited extrapolation of the point velocities"
+        "system/fvSolution TOUCH/compatibleCoeffs", "pointLimiter",
+        "limited extrapolation of the point velocities"
         " (default: on with reconstruction limitedLinear, else off)",
         "-", Switch(Switch::OFF)
     );
@@ -455,10 +456,10 @@ void Foam::deformationUpdates::compatible::addTransposeRate
 
 bool Foam::deformationUpdates::compatible::readQuadraticShare
 (
-    const dictionary& controls
+    const dictionary& coeffs
 )
 {
-    return jumpShareEntry.read(controls) == "quadratic";
+    return jumpShareEntry.read(coeffs) == "quadratic";
 }
 
 
@@ -473,14 +474,41 @@ Foam::deformationUpdates::compatible::compatible
     const linearReconstruction& reconstruction
 )
 :
+    compatible
+    (
+        controls,
+        modelCoeffs
+        (
+            controls,
+            typeName,
+            {&jumpShareEntry, &pointUpwindingEntry, &pointLimiterEntry}
+        ),
+        faces,
+        law,
+        riemann,
+        reconstruction
+    )
+{}
+
+
+Foam::deformationUpdates::compatible::compatible
+(
+    const dictionary& controls,
+    const dictionary& coeffs,
+    solidFaces& faces,
+    const mechanicalLaw& law,
+    const riemannSolver& riemann,
+    const linearReconstruction& reconstruction
+)
+:
     deformationUpdate(controls, faces, law, riemann, reconstruction),
     cellFaces_(compactAddressing::New(faces.mesh()).cellFaces()),
     pointInterpolation_
     (
         faces.mesh(),
         reconstruction,
-        controls.found(pointLimiterEntry.name())
-      ? pointLimiterEntry.read(controls)
+        coeffs.found(pointLimiterEntry.name())
+      ? pointLimiterEntry.read(coeffs)
       : Switch
         (
             reconstruction.schemeType()
@@ -493,8 +521,8 @@ Foam::deformationUpdates::compatible::compatible
     faceForce_(faces.mesh().boundary().size(), Zero),
     fixingFace_(faces.mesh().boundary().size()),
     pointForce_(faces.mesh().nPoints(), Zero),
-    quadraticShare_(readQuadraticShare(controls)),
-    pointUpwinding_(pointUpwindingEntry.read(controls)),
+    quadraticShare_(readQuadraticShare(coeffs)),
+    pointUpwinding_(pointUpwindingEntry.read(coeffs)),
     pointMobility_
     (
         calcPointMobility
@@ -519,6 +547,16 @@ Foam::deformationUpdates::compatible::compatible
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::deformationUpdates::compatible::writeOptions(Ostream& os) const
+{
+    os  << " (" << jumpShareEntry.name() << ' '
+        << (quadraticShare_ ? "quadratic" : "linear") << ", "
+        << pointUpwindingEntry.name() << ' ' << pointUpwinding_ << ", "
+        << pointLimiterEntry.name() << ' '
+        << (pointInterpolation_.limited() ? "on" : "off") << ')';
+}
+
 
 void Foam::deformationUpdates::compatible::rates
 (

@@ -11,6 +11,7 @@ License
 #include "zeroGradientFvPatchFields.H"
 #include "addToRunTimeSelectionTable.H"
 #include "declaredEntry.H"
+#include "modelCoeffs.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -30,19 +31,22 @@ namespace Foam
 {
     static const declaredEntry<scalar> yieldStressEntry
     (
-        "constant/mechanicalProperties, model vonMisesPlastic", "yieldStress", "initial yield stress", "Pa", 0.4e9,
+        "constant/mechanicalProperties vonMisesPlasticCoeffs", "yieldStress",
+        "initial yield stress", "Pa", 0.4e9,
         entryLimits::above(0, false), declaredEntry<scalar>::required
     );
 
     static const declaredEntry<scalar> hardeningModulusEntry
     (
-        "constant/mechanicalProperties, model vonMisesPlastic", "hardeningModulus", "linear isotropic hardening modulus", "Pa",
+        "constant/mechanicalProperties vonMisesPlasticCoeffs",
+        "hardeningModulus", "linear isotropic hardening modulus", "Pa",
         0.1e9, entryLimits::above(0, true), declaredEntry<scalar>::required
     );
 
     static const declaredEntry<word> yieldStressMeasureEntry
     (
-        "constant/mechanicalProperties, model vonMisesPlastic", "yieldStressMeasure",
+        "constant/mechanicalProperties vonMisesPlasticCoeffs",
+        "yieldStressMeasure",
         "the stress the yield stress bounds: the Kirchhoff stress (the seed"
         " paper's) or the Cauchy stress (CalculiX's)",
         "-", word("Kirchhoff"), entryLimits::oneOf({"Kirchhoff", "Cauchy"})
@@ -54,7 +58,7 @@ namespace Foam
 
 bool Foam::mechanicalLaws::vonMisesPlastic::readYieldStressMeasure() const
 {
-    return yieldStressMeasureEntry.read(*this) == "Cauchy";
+    return yieldStressMeasureEntry.read(coeffs_) == "Cauchy";
 }
 
 
@@ -112,8 +116,21 @@ Foam::mechanicalLaws::vonMisesPlastic::vonMisesPlastic
 )
 :
     mechanicalLaw(mesh, dict),
-    yieldStress_(yieldStressEntry.read(*this)),
-    hardeningModulus_(hardeningModulusEntry.read(*this)),
+    coeffs_
+    (
+        modelCoeffs
+        (
+            *this,
+            typeName,
+            {
+                &yieldStressEntry,
+                &hardeningModulusEntry,
+                &yieldStressMeasureEntry
+            }
+        )
+    ),
+    yieldStress_(yieldStressEntry.read(coeffs_)),
+    hardeningModulus_(hardeningModulusEntry.read(coeffs_)),
     yieldOnCauchy_(readYieldStressMeasure()),
     CpInv_
     (

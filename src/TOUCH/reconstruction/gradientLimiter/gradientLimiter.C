@@ -7,6 +7,7 @@ License
 
 #include "gradientLimiter.H"
 #include "declaredEntry.H"
+#include "modelCoeffs.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -23,8 +24,8 @@ namespace Foam
 {
     static const declaredEntry<word> limiterEntry
     (
-        "system/fvSolution TOUCH", "limiter",
-        "reconstruction limitedLinear: the gradient limiter",
+        "system/fvSolution TOUCH/limitedLinearCoeffs", "limiter",
+        "the gradient limiter",
         "-", word("BarthJespersen"),
         entryLimits::selectedFrom(&entryLimits::tableNames<gradientLimiter>),
         declaredEntry<word>::required
@@ -36,9 +37,15 @@ namespace Foam
 
 Foam::autoPtr<Foam::gradientLimiter> Foam::gradientLimiter::New
 (
-    const dictionary& dict
+    const dictionary& controls
 )
 {
+    // The limiter belongs to the reconstruction limitedLinear
+    const dictionary dict
+    (
+        modelCoeffs(controls, "limitedLinear", {&limiterEntry})
+    );
+
     const word limiterType(limiterEntry.read(dict));
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(limiterType);
