@@ -27,7 +27,7 @@ taylorImpact -n 2 (60 cells, to 80 us), barRebound -n 2 (60 cells, to
     patch 'wall' at 1 (read from the time folder with the touchfoam
     package, not from ParaView), blue ('free') pixels exactly when one is
     at 0; barRebound has its end in contact at 30 us and none at 400 us,
-    in flight (separation near 280 us, BENCHMARKS.md 4).
+    in flight (separation near 280 us: 2L/c0, the seed paper's bar rebound).
 Work folders: test/runs/tutorialPictures/.
 """
 

@@ -15,7 +15,7 @@ spinningCube runs with -parallel 2 as well.  Asserted per tutorial:
   - the impact tutorials and twistingColumn skip their pictures (and
     plots) with a message;
   - 0/U (and for the swinging cubes 0/F) at every cell equals the closed
-    form at the cell centres (BENCHMARKS.md) to 1e-12 of its largest value:
+    form at the cell centres (the tutorials' set-up) to 1e-12 of its largest value:
     rigid motion v_t + omega x X (spinningCube: v_t = (1 0.5 -0.25) m/s,
     omega = (4 6 8) rad/s), the twisting column's omega x X with
     omega = (0, 105 sin(pi Y/12), 0), the impact velocities, and the
