@@ -181,9 +181,12 @@ residuals measure
             x[facei] = patch.Cf()[facei] + centred(rnd, 0.2);
         }
 
+        const scalarField rhoF(p.size(), rho);
+        const scalarField UpF(p.size(), Up);
+        const scalarField UsF(p.size(), Us);
         const solidFluxFvPatchVectorField::interiorState s
         {
-            p, t, n, x, x, rho, Up, Us, rnd.position<label>(1, 3),
+            p, t, n, x, x, rhoF, UpF, UsF, rnd.position<label>(1, 3),
             stageTimeRange*rnd.sample01<scalar>()
         };
 

@@ -112,6 +112,72 @@ int main(int argc, char *argv[])
         );
     }
 
+    // The flux between two materials (interfaceFlux), in velocities
+    for (label sample = 0; sample < 5; ++sample)
+    {
+        const vector n(unitVector());
+        const vector vL(randomVector(1)), tL(randomVector(tScale));
+        const vector vR(randomVector(1)), tR(randomVector(tScale));
+        const scalar Zn = rho*Up;
+        const scalar Zt = rho*Us;
+        vector vC, tC, pC, tC1;
+
+        // Equal impedances: the one-material flux, p = rho v
+        riemann->interfaceFlux(vL, tL, Zn, Zt, vR, tR, Zn, Zt, n, vC, tC);
+        riemann->flux(rho*vL, tL, rho*vR, tR, n, pC, tC1);
+        report.check
+        (
+            "interface flux of equal impedances is the material's flux",
+            mag(tC - tC1)/tScale + mag(rho*vC - pC)/pScale,
+            1e-13
+        );
+
+        // Impedances Z_L, Z_R = 3 Z_L (normal) and 2 Z_L (tangential):
+        // a state at rest and unloaded on the right, a normal stress
+        // wave (t = -Z_L v n in the left material, moving right)
+        const scalar ZnR = 3*Zn;
+        const scalar ZtR = 2*Zt;
+        const scalar v0 = 1.7;
+        riemann->interfaceFlux
+        (
+            v0*n, -Zn*v0*n, Zn, Zt, Zero, Zero, ZnR, ZtR, n, vC, tC
+        );
+        // Transmitted stress 2 Z_R/(Z_L + Z_R) of the incident one
+        report.check
+        (
+            "interface: transmitted normal stress 2 Z_R/(Z_L + Z_R)",
+            mag(tC - (2*ZnR/(Zn + ZnR))*(-Zn*v0)*n)/(Zn*v0),
+            1e-14
+        );
+        // Contact velocity 2 Z_L v0/(Z_L + Z_R), tangential the same
+        const vector tangent((unitVector() ^ n)/mag(unitVector() ^ n));
+        vector vC2, tC2;
+        riemann->interfaceFlux
+        (
+            v0*tangent, -Zt*v0*tangent, Zn, Zt, Zero, Zero, ZnR, ZtR, n,
+            vC2, tC2
+        );
+        report.check
+        (
+            "interface: contact velocities 2 Z_L v0/(Z_L + Z_R)",
+            mag(vC - (2*Zn/(Zn + ZnR))*v0*n)/v0
+          + mag(vC2 - (2*Zt/(Zt + ZtR))*v0*tangent)/v0,
+            1e-14
+        );
+        // Conservation: seen from the right, -t^C and the same v^C
+        riemann->interfaceFlux(vL, tL, Zn, Zt, vR, tR, ZnR, ZtR, n, vC, tC);
+        riemann->interfaceFlux
+        (
+            vR, -tR, ZnR, ZtR, vL, -tL, Zn, Zt, -n, vC2, tC2
+        );
+        report.check
+        (
+            "interface: the right cell sees -t^C and the same v^C",
+            mag(tC + tC2)/tScale + mag(vC - vC2),
+            1e-13
+        );
+    }
+
     // Boundary conditions of the test case, fed random interior states
     volVectorField lm
     (
@@ -138,9 +204,10 @@ int main(int argc, char *argv[])
             nM[i] = unitVector();
         }
 
+        const scalarField rhoF(size, rho), UpF(size, Up), UsF(size, Us);
         const solidFluxFvPatchVectorField::interiorState interior
         {
-            pM, tM, nM, xM, xM, rho, Up, Us, 1, 0
+            pM, tM, nM, xM, xM, rhoF, UpF, UsF, 1, 0
         };
         vectorField pC(size), tC(size);
         bc.flux(interior, pC, tC);

@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "solidFaces.H"
+#include "mechanicalLaw.H"
 
 // * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -96,6 +97,27 @@ void Foam::solidFaces::fillInteriorState(const label patchi)
 }
 
 
+void Foam::solidFaces::fillMaterial(const mechanicalLaw& law)
+{
+    forAll(mesh_.boundary(), patchi)
+    {
+        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+        scalarField& rho = rhoM_[patchi];
+        scalarField& Up = UpM_[patchi];
+        scalarField& Us = UsM_[patchi];
+
+        forAll(rho, i)
+        {
+            rho[i] = law.rho(faceCells[i]);
+            Up[i] = law.Up(faceCells[i]);
+            Us[i] = law.Us(faceCells[i]);
+        }
+    }
+
+    materialFilled_ = true;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::solidFaces::solidFaces
@@ -116,7 +138,8 @@ Foam::solidFaces::solidFaces
     P_(P),
     u_(u),
     pointU_(pointU),
-    stageTime_(mesh.time().value())
+    stageTime_(mesh.time().value()),
+    materialFilled_(false)
 {
     auto coupled = [](const fvPatch& patch) { return patch.coupled(); };
     auto solid = [](const fvPatch& patch) { return !patch.coupled(); };
@@ -134,6 +157,9 @@ Foam::solidFaces::solidFaces
     sizeBuffers(mesh, NM_, solid);
     sizeBuffers(mesh, xM_, solid);
     sizeBuffers(mesh, xPointsM_, solid);
+    sizeBuffers(mesh, rhoM_, solid);
+    sizeBuffers(mesh, UpM_, solid);
+    sizeBuffers(mesh, UsM_, solid);
 
     forAll(mesh.boundary(), patchi)
     {

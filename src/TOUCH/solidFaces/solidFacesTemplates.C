@@ -83,6 +83,11 @@ void Foam::solidFaces::forAllSolidPatches
     Op op
 )
 {
+    if (!materialFilled_)
+    {
+        fillMaterial(law);
+    }
+
     forAll(mesh_.boundary(), patchi)
     {
         const fvPatch& patch = mesh_.boundary()[patchi];
@@ -97,13 +102,13 @@ void Foam::solidFaces::forAllSolidPatches
         const solidFluxFvPatchVectorField::interiorState state
         {
             pM_[patchi], tM_[patchi], nM_[patchi], xM_[patchi],
-            xPointsM_[patchi], law.rho(), law.Up(), law.Us(), stage,
+            xPointsM_[patchi], rhoM_[patchi], UpM_[patchi], UsM_[patchi], stage,
             stageTime_
         };
         const solidFluxFvPatchVectorField::interiorState reference
         {
             pM_[patchi], tM_[patchi], NM_[patchi], xM_[patchi],
-            xPointsM_[patchi], law.rho(), law.Up(), law.Us(), stage,
+            xPointsM_[patchi], rhoM_[patchi], UpM_[patchi], UsM_[patchi], stage,
             stageTime_
         };
 

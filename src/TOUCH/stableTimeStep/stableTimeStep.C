@@ -122,13 +122,25 @@ Foam::stableTimeStep::stableTimeStep
     CFL_(readCFL(controls)),
     hCell_(calcCellLengths(faces)),
     hMin_(gMin(hCell_)),
-    Up_(law.Up()),
+    Up_(law.maxUp()),
+    upRatio_(),
     faces_(faces),
     heightPatch_(faces.mesh().boundary().size())
 {
     forAll(faces.mesh().boundary(), patchi)
     {
         heightPatch_[patchi] = faces.mesh().boundary()[patchi].size() > 0;
+    }
+
+    // Several materials: a cell's heights count as h Up_max/Up_cell, so
+    // that the smallest is the one whose wave crossing is the shortest
+    if (!law.uniformMaterial())
+    {
+        upRatio_.setSize(faces.mesh().nCells());
+        forAll(upRatio_, celli)
+        {
+            upRatio_[celli] = Up_/law.Up(celli);
+        }
     }
 }
 
@@ -155,10 +167,13 @@ Foam::scalar Foam::stableTimeStep::deltaT(const volTensorField& F) const
     // and no division a face)
     scalar crossing = GREAT;
     scalar crossingSqr = sqr(crossing);
+    const bool uniform = upRatio_.empty();
 
     forAll(F, celli)
     {
         const tensor& Fc = F[celli];
+        const scalar ratio = uniform ? 1 : upRatio_[celli];
+        const scalar h = ratio*hCell_[celli];
         const scalar J = det(Fc);
         const symmTensor C(symm(Fc.T() & Fc));
 
@@ -178,7 +193,7 @@ Foam::scalar Foam::stableTimeStep::deltaT(const volTensorField& F) const
         (
             J > 0
          && lowest > 0
-         && sqr(hCell_[celli])*lowest >= crossingSqr*sqr(max(J, scalar(1)))
+         && sqr(h)*lowest >= crossingSqr*sqr(max(J, scalar(1)))
         )
         {
             continue;
@@ -190,7 +205,7 @@ Foam::scalar Foam::stableTimeStep::deltaT(const volTensorField& F) const
             // stretch alone
             const scalar minStretch =
                 Foam::sqrt(max(minEigenValue(C), scalar(0)));
-            crossing = min(crossing, hCell_[celli]*minStretch);
+            crossing = min(crossing, h*minStretch);
             crossingSqr = sqr(crossing);
             continue;
         }
@@ -228,6 +243,7 @@ Foam::scalar Foam::stableTimeStep::deltaT(const volTensorField& F) const
                 }
             }
 
+            s *= ratio;
             const scalar HSSqr = magSqr(H & Sf[facei]);
             if (credit*sqr(s) < crossingSqr*HSSqr)
             {

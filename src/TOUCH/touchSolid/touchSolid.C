@@ -132,8 +132,9 @@ void Foam::touchSolid::computeRates(const label stage)
         // The semi-discrete energy balance: the compatible update's rate is
         // the upwind dissipation plus the work of prescribed motion and
         // tractions
+        const scalarField rho(law_->cellRho());
         const scalar kinetic =
-            gSum(lm_.primitiveField() & lmRate_)/law_->rho();
+            gSum((lm_.primitiveField() & lmRate_)/rho);
         const scalar stored = gSum(P_.primitiveField() && FRate_);
 
         Info<< "touchSolid: stage " << stage << " energy rate: kinetic "
@@ -246,6 +247,17 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
 {
     checkTwoD();
 
+    // The correction's inertia and energy are those of one density
+    if (preserveAngularMomentum_ && !law_->uniformMaterial())
+    {
+        FatalIOErrorInFunction(controls_)
+            << "Entry '" << angularMomentumEntry.name() << "' on with"
+            << " several materials ('materials' in constant/"
+            << "mechanicalProperties): the preservation assumes one density;"
+            << " set " << angularMomentumEntry.name() << " off"
+            << exit(FatalIOError);
+    }
+
     if (mesh.time().value() == 0)
     {
         checkInitialVelocity();
@@ -330,7 +342,6 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
     //     U <- alpha U^n + (1 - alpha)(U + dt L(U))
     const scalar alpha = rungeKutta_.alpha(stage);
     const scalar beta = 1 - alpha;
-    const scalar rho = law_->rho();
 
     vectorField& lm = lm_.primitiveFieldRef();
     tensorField& F = F_.primitiveFieldRef();
@@ -342,11 +353,16 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
     // that uses them, rather than in passes of their own. D advances with
     // the stage momentum, so before lm
     const scalarField& invV = inverseVolumes_;
-    const scalar dtByRho = dt/rho;
+
+    // One material: dt/rho once (bit for bit as before); several: each
+    // cell's own density
+    const bool uniform = law_->uniformMaterial();
+    const scalar dtByRho = dt/law_->materialRho(0);
 
     forAll(F, celli)
     {
-        D[celli] = alpha*D0_[celli] + beta*(D[celli] + dtByRho*lm[celli]);
+        const scalar dtByRhoi = uniform ? dtByRho : dt/law_->rho(celli);
+        D[celli] = alpha*D0_[celli] + beta*(D[celli] + dtByRhoi*lm[celli]);
         F[celli] =
             alpha*F0_[celli]
           + beta*(F[celli] + (dt*invV[celli])*FRate_[celli]);
@@ -390,7 +406,7 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
                 alpha*lm0_ + beta*lm,
                 beta*dt,
                 Lstage_,
-                rho,
+                law_->rho(),
                 Estage_ - strainEnergy(),
                 lmRate_
             );

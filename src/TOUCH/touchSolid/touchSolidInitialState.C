@@ -91,7 +91,7 @@ Foam::tmp<Foam::scalarField> Foam::touchSolid::cellDensity
     const mechanicalLaw& law
 )
 {
-    return tmp<scalarField>::New(mesh.nCells(), law.rho());
+    return law.cellRho();
 }
 
 

@@ -85,6 +85,16 @@ Foam::scalar Foam::touchSolid::kineticEnergy() const
     const scalarField& V = mesh_.V();
     const vectorField& lm = lm_.primitiveField();
 
+    if (!law_->uniformMaterial())
+    {
+        scalar sum = 0;
+        forAll(lm, celli)
+        {
+            sum += V[celli]*magSqr(lm[celli])/law_->rho(celli);
+        }
+        return returnReduce(sum, sumOp<scalar>())/2;
+    }
+
     scalar sum = 0;
     forAll(lm, celli)
     {
@@ -111,12 +121,15 @@ void Foam::touchSolid::writeSummary(Ostream& os) const
     os  << "    mechanical law  ";
     law_->writeConstants(os);
 
-    os  << nl
-        << "    elastic moduli  mu " << law_->mu() << ", lambda "
-        << law_->lambda() << ", kappa " << law_->kappa() << nl
-        << "    wave speeds     Up " << law_->Up() << ", Us " << law_->Us()
-        << nl
-        << "    h_min           " << timeStep_.hMin() << nl
+    os  << nl;
+    if (law_->uniformMaterial())
+    {
+        os  << "    elastic moduli  mu " << law_->mu() << ", lambda "
+            << law_->lambda() << ", kappa " << law_->kappa() << nl
+            << "    wave speeds     Up " << law_->Up() << ", Us "
+            << law_->Us() << nl;
+    }
+    os  << "    h_min           " << timeStep_.hMin() << nl
         << "    scheme          Riemann solver " << riemann_->type()
         << ", reconstruction " << reconstruction_.description().c_str()
         << ", CFL " << timeStep_.CFL() << nl
@@ -136,7 +149,6 @@ void Foam::touchSolid::writeSummary(Ostream& os) const
 void Foam::touchSolid::writeOutputFields()
 {
     const word& timeName = mesh_.time().timeName();
-    const scalar rho = law_->rho();
 
     auto outputIO = [&](const word& name)
     {
@@ -178,7 +190,24 @@ void Foam::touchSolid::writeOutputFields()
         // lm/rho of the lm written with it, cell by cell and on the patches
         // (with the dimensions of a velocity: a restart from a folder
         // whose lm is missing reads this U, and checks them)
-        volVectorField U(outputIO("U"), lm_/rho);
+        volVectorField U(outputIO("U"), lm_/law_->materialRho(0));
+        if (!law_->uniformMaterial())
+        {
+            // Each cell's own density, and the patch cell's on a patch
+            U.primitiveFieldRef() = lm_.primitiveField()/law_->cellRho();
+            forAll(U.boundaryField(), patchi)
+            {
+                const labelUList& faceCells =
+                    mesh_.boundary()[patchi].faceCells();
+                fvPatchVectorField& Up = U.boundaryFieldRef()[patchi];
+                forAll(Up, i)
+                {
+                    Up[i] =
+                        lm_.boundaryField()[patchi][i]
+                       /law_->rho(faceCells[i]);
+                }
+            }
+        }
         U.dimensions().reset(dimVelocity);
         U.write();
     }

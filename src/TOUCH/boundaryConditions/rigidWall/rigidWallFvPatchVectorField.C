@@ -423,7 +423,7 @@ void Foam::rigidWallFvPatchVectorField::updateActiveSet
         // The normal traction of the wall solution: > 0 if the wall pushes
         const scalar tW =
             (s.t[facei] & normal_)
-          - s.Up*((s.p[facei] & normal_) - s.rho*wallNormalSpeed);
+          - s.Up[facei]*((s.p[facei] & normal_) - s.rho[facei]*wallNormalSpeed);
 
         const bool compressive = tW > 0;
 
@@ -471,17 +471,18 @@ void Foam::rigidWallFvPatchVectorField::flux
     tractionFlux(s, vectorField(pC.size(), Zero), pC, tC);
 
     const tensor nn(sqr(normal_));
-    const vector wallMomentum(s.rho*velocity_->value(s.time));
+    const vector wallVelocity(velocity_->value(s.time));
 
     forAll(contact_, facei)
     {
         if (contact_[facei])
         {
+            const vector wallMomentum(s.rho[facei]*wallVelocity);
             pC[facei] =
-                ((tensor::I - nn) & (s.p[facei] - s.t[facei]/s.Us))
+                ((tensor::I - nn) & (s.p[facei] - s.t[facei]/s.Us[facei]))
               + (nn & wallMomentum);
             tC[facei] =
-                nn & (s.t[facei] - s.Up*(s.p[facei] - wallMomentum));
+                nn & (s.t[facei] - s.Up[facei]*(s.p[facei] - wallMomentum));
         }
     }
 }

@@ -22,8 +22,8 @@ void Foam::solidFluxConditions::skewSymmetricPlane::flux
         const vector& n = s.n[facei];
         const tensor nn(sqr(n));
 
-        pC[facei] = nn & (s.p[facei] - s.t[facei]/s.Up);
-        tC[facei] = (tensor::I - nn) & (s.t[facei] - s.Us*s.p[facei]);
+        pC[facei] = nn & (s.p[facei] - s.t[facei]/s.Up[facei]);
+        tC[facei] = (tensor::I - nn) & (s.t[facei] - s.Us[facei]*s.p[facei]);
     }
 }
 

@@ -52,7 +52,7 @@ void Foam::solidFluxFvPatchVectorField::tractionFlux
     forAll(pC, facei)
     {
         const tensor nn(sqr(s.n[facei]));
-        const tensor St(nn/s.Up + (tensor::I - nn)/s.Us);
+        const tensor St(nn/s.Up[facei] + (tensor::I - nn)/s.Us[facei]);
 
         pC[facei] = s.p[facei] + (St & (tStar[facei] - s.t[facei]));
         tC[facei] = tStar[facei];
@@ -71,7 +71,7 @@ void Foam::solidFluxFvPatchVectorField::momentumFlux
     forAll(pC, facei)
     {
         const tensor nn(sqr(s.n[facei]));
-        const tensor Sp(s.Up*nn + s.Us*(tensor::I - nn));
+        const tensor Sp(s.Up[facei]*nn + s.Us[facei]*(tensor::I - nn));
 
         pC[facei] = pStar[facei];
         tC[facei] = s.t[facei] + (Sp & (pStar[facei] - s.p[facei]));

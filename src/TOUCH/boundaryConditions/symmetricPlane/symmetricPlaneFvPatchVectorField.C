@@ -22,8 +22,8 @@ void Foam::solidFluxConditions::symmetricPlane::flux
         const vector& n = s.n[facei];
         const tensor nn(sqr(n));
 
-        pC[facei] = (tensor::I - nn) & (s.p[facei] - s.t[facei]/s.Us);
-        tC[facei] = nn & (s.t[facei] - s.Up*s.p[facei]);
+        pC[facei] = (tensor::I - nn) & (s.p[facei] - s.t[facei]/s.Us[facei]);
+        tC[facei] = nn & (s.t[facei] - s.Up[facei]*s.p[facei]);
     }
 }
 

@@ -253,6 +253,12 @@ void Foam::deformationUpdates::compatible::addFaceRates
     vectorField& lmRate
 )
 {
+    if (!law_.uniformMaterial())
+    {
+        addFaceRatesOfMaterials(lmRate);
+        return;
+    }
+
     // With preservation, the cell jumps less the jump of the body's rigid
     // spin (zero otherwise), which no reconstruction keeps and which the
     // upwinding must not damp
@@ -333,6 +339,118 @@ void Foam::deformationUpdates::compatible::addFaceRates
 }
 
 
+Foam::vector Foam::deformationUpdates::compatible::materialUpwindForce
+(
+    const label mL,
+    const label mR,
+    const vector& cellJump,
+    const vector& reconstructedJump,
+    const tensor& FSum,
+    const vector& Sf,
+    const scalar magSf
+) const
+{
+    // The share of the velocity jump the reconstruction keeps, damped with
+    // Z_L Z_R/(Z_L + Z_R) per direction: rho Up/2 of the momentum jump's
+    // Up/2 when the two sides are one material
+    const vector dv(upwindShare(reconstructedJump, cellJump)*cellJump);
+
+    const scalar rhoL = law_.materialRho(mL);
+    const scalar rhoR = law_.materialRho(mR);
+
+    return
+        magSf
+       *riemann_.interfaceUpwindTraction
+        (
+            dv,
+            rhoL*law_.materialUp(mL), rhoL*law_.materialUs(mL),
+            rhoR*law_.materialUp(mR), rhoR*law_.materialUs(mR),
+            solidFaces::spatialNormal(FSum, Sf)
+        );
+}
+
+
+void Foam::deformationUpdates::compatible::addFaceRatesOfMaterials
+(
+    vectorField& lmRate
+)
+{
+    const fvMesh& mesh = faces_.mesh();
+    const labelUList& own = mesh.owner();
+    const labelUList& nei = mesh.neighbour();
+    const vectorField& X = faces_.reconstructionCentres();
+    const vectorField& Cf = mesh.faceCentres();
+    const vectorField& Sf = mesh.faceAreas();
+    const scalarField& magSf = mesh.magSf().primitiveField();
+    const vectorField& p = faces_.lm().primitiveField();
+    const tensorField& F = faces_.F().primitiveField();
+    const tensorField& gradp =
+        faces_.reconstruction().gradp().primitiveField();
+    const tensorField& P = faces_.P().primitiveField();
+    const faceList& faces = mesh.faces();
+    const bool upwindPoints = pointUpwinding_ > 0;
+
+    forAll(own, facei)
+    {
+        const label o = own[facei];
+        const label n = nei[facei];
+
+        addFaceForces
+        (
+            facei, faces[facei], Sf[facei], P[o] - P[n], upwindPoints
+        );
+
+        const label mL = law_.material(o);
+        const label mR = law_.material(n);
+        const scalar invRhoL = 1/law_.materialRho(mL);
+        const scalar invRhoR = 1/law_.materialRho(mR);
+
+        const vector tC
+        (
+            materialUpwindForce
+            (
+                mL,
+                mR,
+                invRhoR*p[n] - invRhoL*p[o],
+                invRhoR
+               *linearReconstruction::p(p[n], gradp[n], Cf[facei] - X[n])
+              - invRhoL
+               *linearReconstruction::p(p[o], gradp[o], Cf[facei] - X[o]),
+                F[o] + F[n],
+                Sf[facei],
+                magSf[facei]
+            )
+        );
+
+        lmRate[o] += tC;
+        lmRate[n] -= tC;
+    }
+
+    faces_.forAllCoupledPatchFaces
+    (
+        [&](const solidFaces::coupledFace& face)
+        {
+            const label mL = law_.material(face.owner);
+            const label mR = rightMaterial(face.facei, face.neighbour);
+            const scalar invRhoL = 1/law_.materialRho(mL);
+            const scalar invRhoR = 1/law_.materialRho(mR);
+
+            lmRate[face.owner] +=
+                materialUpwindForce
+                (
+                    mL,
+                    mR,
+                    invRhoR*face.right.lm - invRhoL*face.left.lm,
+                    invRhoR*face.pR() - invRhoL*face.pL(),
+                    face.left.F + face.right.F,
+                    face.Sf,
+                    face.magSf
+                );
+        }
+    );
+}
+
+
 void Foam::deformationUpdates::compatible::addBoundaryRate
 (
     const label stage,
@@ -373,11 +491,10 @@ void Foam::deformationUpdates::compatible::addBoundaryRate
             // (towards zero instead, a moving wall's bounce was off by
             // 1.2e-3 in momentum)
             vectorField& pM = faces_.interiorMomentum(patchi);
-            const scalar rho = law_.rho();
             forAll(faceCells, i)
             {
                 const tensor fixed(tensor::I - free[i]);
-                const vector pStar(rho*faceVelocity_[patchi][i]);
+                const vector pStar(state.rho[i]*faceVelocity_[patchi][i]);
                 const vector departure((fixed & lm[faceCells[i]]) - pStar);
                 pM[i] =
                     (free[i] & pM[i]) + pStar
@@ -525,10 +642,12 @@ Foam::deformationUpdates::compatible::compatible
     pointUpwinding_(pointUpwindingEntry.read(coeffs)),
     pointMobility_
     (
-        calcPointMobility
+        law.uniformMaterial()
+      ? calcPointMobility
         (
             faces.mesh(), reconstruction, pointUpwinding_, law.rho()*law.Up()
         )
+      : calcPointMobilityOfMaterials(reconstruction, pointUpwinding_)
     ),
     reconstructedForce_(pointUpwinding_ > 0 ? faces.mesh().nPoints() : 0),
     faceIncrementForce_(pointUpwinding_ > 0 ? faces.mesh().nFaces() : 0),
@@ -581,7 +700,17 @@ void Foam::deformationUpdates::compatible::rates
 
     // Point velocities v_a = Pi_a (A v)_a + b_a, and the upwinding of the
     // nodal forces
-    pointInterpolation_.interpolateMomentum(faces_.lm(), 1/law_.rho(), pointV);
+    if (law_.uniformMaterial())
+    {
+        pointInterpolation_.interpolateMomentum
+        (
+            faces_.lm(), 1/law_.rho(), pointV
+        );
+    }
+    else
+    {
+        interpolateVelocity(pointV);
+    }
     constraints_.constrain(pointV);
 
     if (pointUpwinding_ > 0)

@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "deformationUpdate.H"
+#include "syncTools.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -108,8 +109,17 @@ Foam::deformationUpdate::deformationUpdate
     pC_(faces.mesh().boundary().size()),
     tC_(faces.mesh().boundary().size()),
     rigidSpin_(Zero),
-    pointDisplacement_(nullptr)
+    pointDisplacement_(nullptr),
+    neighbourMaterial_()
 {
+    if (!law.uniformMaterial())
+    {
+        syncTools::swapBoundaryCellList
+        (
+            faces.mesh(), law.cellMaterial(), neighbourMaterial_
+        );
+    }
+
     forAll(faces.mesh().boundary(), patchi)
     {
         const fvPatch& patch = faces.mesh().boundary()[patchi];
@@ -143,7 +153,28 @@ Foam::scalar Foam::deformationUpdate::boundaryPower() const
         }
     }
 
-    return power/law_.rho();
+    if (law_.uniformMaterial())
+    {
+        return power/law_.rho();
+    }
+
+    // Each face's cell's density
+    power = 0;
+    forAll(pC_, patchi)
+    {
+        const vectorField& pC = pC_[patchi];
+        const vectorField& tC = tC_[patchi];
+        const fvPatch& patch = faces_.mesh().boundary()[patchi];
+
+        forAll(pC, i)
+        {
+            power +=
+                (pC[i] & tC[i])*patch.magSf()[i]
+               /law_.rho(patch.faceCells()[i]);
+        }
+    }
+
+    return power;
 }
 
 

@@ -18,6 +18,12 @@ void Foam::deformationUpdates::riemannUpdate::momentumRates
     vector& torque
 )
 {
+    if (!law_.uniformMaterial())
+    {
+        momentumRatesOfMaterials(stage, lmRate, pointV, torque);
+        return;
+    }
+
     const scalar rho = law_.rho();
     faces_.forAllCoupled
     (
@@ -102,6 +108,109 @@ void Foam::deformationUpdates::riemannUpdate::momentumRates
         faceVelocity_,
         pointV
     );
+}
+
+
+void Foam::deformationUpdates::riemannUpdate::momentumRatesOfMaterials
+(
+    const label stage,
+    vectorField& lmRate,
+    vectorField& pointV,
+    vector& torque
+)
+{
+    // Each side's velocity with its own density, and the flux of the two
+    // impedances at every face (equal ones within a material)
+    faces_.forAllCoupled
+    (
+        [&](const solidFaces::coupledFace& face)
+        {
+            const label mL = law_.material(face.owner);
+            const label mR = rightMaterial(face.facei, face.neighbour);
+            const scalar rhoL = law_.materialRho(mL);
+            const scalar rhoR = law_.materialRho(mR);
+
+            vector vC;
+            vector tC;
+            riemann_.interfaceFlux
+            (
+                face.pL()/rhoL, face.tL(),
+                rhoL*law_.materialUp(mL), rhoL*law_.materialUs(mL),
+                face.pR()/rhoR, face.tR(),
+                rhoR*law_.materialUp(mR), rhoR*law_.materialUs(mR),
+                face.n(), vC, tC
+            );
+            tC *= face.magSf;
+
+            faceVelocity_[face.facei] = vC;
+            lmRate[face.owner] += tC;
+            if (face.neighbour >= 0)
+            {
+                lmRate[face.neighbour] -= tC;
+            }
+        }
+    );
+
+    // A boundary face's flux is its cell's material's (solidFaces)
+    faces_.forAllSolidPatches
+    (
+        law_,
+        stage,
+        [&]
+        (
+            const fvPatch& patch,
+            solidFluxFvPatchVectorField& condition,
+            const solidFluxFvPatchVectorField::interiorState& state,
+            const solidFluxFvPatchVectorField::interiorState&
+        )
+        {
+            boundaryFlux(patch, condition, state, torque);
+
+            const vectorField& pC = pC_[patch.index()];
+            const vectorField& tC = tC_[patch.index()];
+            const scalarField& magSf = patch.magSf();
+            const labelUList& faceCells = patch.faceCells();
+
+            forAll(faceCells, i)
+            {
+                faceVelocity_[patch.start() + i] = pC[i]/state.rho[i];
+                lmRate[faceCells[i]] += tC[i]*magSf[i];
+            }
+        }
+    );
+
+    const fvMesh& mesh = faces_.mesh();
+    const vectorField& lm = faces_.lm().primitiveField();
+    vectorField v(lm.size());
+    forAll(v, celli)
+    {
+        v[celli] = lm[celli]/law_.rho(celli);
+    }
+
+    // The empty patches' faces as for one material
+    for (const polyPatch& patch : mesh.boundaryMesh())
+    {
+        if (!isA<emptyPolyPatch>(patch))
+        {
+            continue;
+        }
+
+        const labelUList& faceCells = patch.faceCells();
+        forAll(faceCells, i)
+        {
+            const label facei = patch.start() + i;
+            const vector magS(cmptMag(mesh.faceAreas()[facei]));
+            const direction d =
+                magS.x() >= max(magS.y(), magS.z())
+              ? 0
+              : (magS.y() >= magS.z() ? 1 : 2);
+            vector vf(v[faceCells[i]]);
+            vf[d] = 0;
+            faceVelocity_[facei] = vf;
+        }
+    }
+
+    pointFit_.interpolate(v, 1, faceVelocity_, pointV);
 }
 
 

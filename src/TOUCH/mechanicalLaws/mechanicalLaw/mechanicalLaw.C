@@ -94,7 +94,46 @@ Foam::mechanicalLaw::mechanicalLaw
     nu_(nuEntry.read(*this)),
     mu_(E_/(2*(1 + nu_))),
     lambda_(E_*nu_/((1 + nu_)*(1 - 2*nu_))),
-    kappa_(lambda_ + 2*mu_/3)
+    kappa_(lambda_ + 2*mu_/3),
+    Up_(Foam::sqrt((lambda_ + 2*mu_)/rho_)),
+    Us_(Foam::sqrt(mu_/rho_)),
+    cellMaterial_(),
+    materialRho_(1, rho_),
+    materialUp_(1, Up_),
+    materialUs_(1, Us_)
+{}
+
+
+Foam::mechanicalLaw::mechanicalLaw
+(
+    const fvMesh& mesh,
+    const dictionary& dict,
+    const scalar rho,
+    const scalar E,
+    const scalar nu
+)
+:
+    IOdictionary
+    (
+        IOobject
+        (
+            "mechanicalProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        asMechanicalProperties(mesh, dict)
+    ),
+    mesh_(mesh),
+    rho_(rho),
+    E_(E),
+    nu_(nu),
+    mu_(E_/(2*(1 + nu_))),
+    lambda_(E_*nu_/((1 + nu_)*(1 - 2*nu_))),
+    kappa_(lambda_ + 2*mu_/3),
+    Up_(Foam::sqrt((lambda_ + 2*mu_)/rho_)),
+    Us_(Foam::sqrt(mu_/rho_))
 {}
 
 
@@ -106,15 +145,32 @@ void Foam::mechanicalLaw::writeConstants(Ostream& os) const
     os  << type() << ": rho " << rho_ << ", E " << E_ << ", nu " << nu_;
 }
 
-Foam::scalar Foam::mechanicalLaw::Up() const
+void Foam::mechanicalLaw::checkUniform(const char* what) const
 {
-    return Foam::sqrt((lambda_ + 2*mu_)/rho_);
+    if (!cellMaterial_.empty())
+    {
+        FatalErrorInFunction
+            << "The law of several materials has no single " << what
+            << ": the caller must take the cell's (" << what << "(celli))"
+            << abort(FatalError);
+    }
 }
 
 
-Foam::scalar Foam::mechanicalLaw::Us() const
+Foam::tmp<Foam::scalarField> Foam::mechanicalLaw::cellRho() const
 {
-    return Foam::sqrt(mu_/rho_);
+    if (cellMaterial_.empty())
+    {
+        return tmp<scalarField>::New(mesh_.nCells(), rho_);
+    }
+
+    auto tRho = tmp<scalarField>::New(mesh_.nCells());
+    scalarField& rho = tRho.ref();
+    forAll(rho, celli)
+    {
+        rho[celli] = materialRho_[cellMaterial_[celli]];
+    }
+    return tRho;
 }
 
 

@@ -8,6 +8,7 @@ License
 #include "mechanicalLaw.H"
 #include "declaredEntry.H"
 #include "fvMesh.H"
+#include "zoned.H"
 
 // * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
 
@@ -54,6 +55,43 @@ Foam::autoPtr<Foam::mechanicalLaw> Foam::mechanicalLaw::New
     const dictionary& dict
 )
 {
+    // One law per cellZone: the single law's entries beside it are refused
+    // (which would win is not for the reader to guess); other top-level
+    // entries (variables for $-expansion, #include'd options) stay allowed
+    if (dict.found(mechanicalLaws::zoned::materialsEntry.name()))
+    {
+        wordList flat;
+        for (const entry& e : dict)
+        {
+            const word& key = e.keyword();
+            if
+            (
+                key == modelEntry.name() || key == "rho" || key == "E"
+             || key == "nu" || key.endsWith("Coeffs")
+            )
+            {
+                flat.append(key);
+            }
+        }
+        if (flat.size())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << mechanicalLaws::zoned::materialsEntry.name()
+                << "' (one law per cellZone) given with the single law's"
+                << " entries " << flat << ": use one form, the flat one ("
+                << modelEntry.name() << ", rho, E, nu, <model>Coeffs) for"
+                << " one material, or '"
+                << mechanicalLaws::zoned::materialsEntry.name()
+                << "' with these entries inside each zone's sub-dictionary"
+                << exit(FatalIOError);
+        }
+
+        Info<< "Selecting mechanical law " << mechanicalLaws::zoned::typeName
+            << " (one law per cellZone)" << endl;
+
+        return autoPtr<mechanicalLaw>(new mechanicalLaws::zoned(mesh, dict));
+    }
+
     const word modelType(modelEntry.read(dict));
 
     Info<< "Selecting mechanical law " << modelType << endl;

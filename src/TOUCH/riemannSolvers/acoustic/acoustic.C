@@ -29,8 +29,10 @@ Foam::riemannSolvers::acoustic::acoustic
 )
 :
     riemannSolver(dict, law),
-    Up_(law.Up()),
-    Us_(law.Us()),
+    // The first material's (the only one of a single law; the face loops
+    // of several materials take interfaceFlux with each side's own)
+    Up_(law.materialUp(0)),
+    Us_(law.materialUs(0)),
     invUp_(1/Up_),
     invUs_(1/Us_)
 {}
