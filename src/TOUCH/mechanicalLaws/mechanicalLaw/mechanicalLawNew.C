@@ -58,7 +58,7 @@ Foam::autoPtr<Foam::mechanicalLaw> Foam::mechanicalLaw::New
     // One law per cellZone: the single law's entries beside it are refused
     // (which would win is not for the reader to guess); other top-level
     // entries (variables for $-expansion, #include'd options) stay allowed
-    if (dict.found(mechanicalLaws::zoned::materialsEntry.name()))
+    if (dict.found(mechanicalLaws::zoned::materialsKeyword()))
     {
         wordList flat;
         for (const entry& e : dict)
@@ -76,12 +76,12 @@ Foam::autoPtr<Foam::mechanicalLaw> Foam::mechanicalLaw::New
         if (flat.size())
         {
             FatalIOErrorInFunction(dict)
-                << "Entry '" << mechanicalLaws::zoned::materialsEntry.name()
+                << "Entry '" << mechanicalLaws::zoned::materialsKeyword()
                 << "' (one law per cellZone) given with the single law's"
                 << " entries " << flat << ": use one form, the flat one ("
                 << modelEntry.name() << ", rho, E, nu, <model>Coeffs) for"
                 << " one material, or '"
-                << mechanicalLaws::zoned::materialsEntry.name()
+                << mechanicalLaws::zoned::materialsKeyword()
                 << "' with these entries inside each zone's sub-dictionary"
                 << exit(FatalIOError);
         }

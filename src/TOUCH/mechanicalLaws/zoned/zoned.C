@@ -24,18 +24,24 @@ namespace mechanicalLaws
 
 namespace Foam
 {
-namespace mechanicalLaws
-{
-    const describedEntry zoned::materialsEntry
+    static const describedEntry materialsEntry
     (
         "constant/mechanicalProperties", "materials",
-        "one law per cellZone: a sub-dictionary per zone with the entries"
-        " of a single law (model, rho, E, nu, <model>Coeffs); every cell in"
-        " exactly one listed zone; not with the single law's entries",
-        "-", "",
+        "one law per cellZone, instead of the single law's entries: a"
+        " sub-dictionary per zone holding a single law's entries (model,"
+        " rho, E, nu, the model's Coeffs); every cell in exactly one listed"
+        " zone",
+        "-", "none (one law: model, rho, E, nu)",
         "{ steel { model linearElastic; rho 7800; E 200e9; nu 0.3; } }"
     );
 }
+
+
+// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
+
+const Foam::word& Foam::mechanicalLaws::zoned::materialsKeyword()
+{
+    return materialsEntry.name();
 }
 
 
