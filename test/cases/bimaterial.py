@@ -22,6 +22,11 @@ Extras: --with-meshing (bin/inpToGmsh, gmshToFoam)
     sum 1/2 rho_cell V U^2 to 1e-12 (each cell's own density), p_x stays
     its initial sum rho V U_x to 1e-10 of rho2 v0 V_bar, and the total
     energy never grows over the run (1e-12 relative slack);
+  - the right zone vonMisesPlastic (yieldStress 1e5 Pa, below the
+    transmitted wave's von Mises stress): epsilonP grows in it and stays
+    exactly 0 in the elastic zone, and 250 + 250 steps with a restart
+    from the written time end where 500 steps do, to 1e-12 (lm, F,
+    epsilonP, CpInv);
   - a decomposed run (2 ranks, the cut on the interface) equals the serial
     one to 1e-10 of the fields' largest values (sigma, U): the sums of
     the cut faces' points come in another order, and 800 steps carry that
@@ -210,6 +215,56 @@ def free_body(root, lines, failures):
     return case
 
 
+def plastic_restart(root, lines, failures):
+    """A zone with a law with state: its state stays in its zone, and a
+    restart from a written time continues as the uninterrupted run."""
+    base = make_case(root, "plastic")
+    write_properties(base, "materials\n{\n    left %s\n    right { model "
+                     "vonMisesPlastic; rho %.17g; E %.17g; nu %.17g; "
+                     "vonMisesPlasticCoeffs { yieldStress 1e5; "
+                     "hardeningModulus 1e8; } }\n}\n"
+                     % (law(RHO1), RHO2, E, NU))
+    write_velocity(base, "lm", "uniform (0 0 0)",
+                   "{ type prescribedVelocity; velocity uniform (%g 0 0); "
+                   "value uniform (0 0 0); }" % V0,
+                   "{ type traction; value uniform (0 0 0); }")
+    for key, value in (("endTime", 1), ("writeControl", "timeStep"),
+                       ("startFrom", "latestTime"), ("writePrecision", 17)):
+        run.foam_set(base, "system/controlDict", key, value)
+    runs = {}
+    for label, parts in (("whole", [500]), ("restarted", [250, 250])):
+        case = os.path.join(root, "plastic-" + label)
+        if os.path.isdir(case):
+            shutil.rmtree(case)
+        shutil.copytree(base, case)
+        for steps in parts:
+            run.foam_set(case, "system/controlDict", "maxSteps", steps)
+            run.foam_set(case, "system/controlDict", "writeInterval", steps)
+            run.run(["touchFoam"], case, timeout=testing.RUN_TIMEOUT)
+        runs[label] = run.latest_time_dir(case)
+    x = PolyMesh(base).cell_centres[:, 0]
+    n = len(x)
+    eps = testing.read_internal(runs["whole"], "epsilonP", n)
+    left = x < 0.5 * SIZE[0]
+    worst = 0.0
+    for field in ("lm", "F", "epsilonP", "CpInv"):
+        a = foamfile.read_field(os.path.join(runs["whole"], field))
+        b = foamfile.read_field(os.path.join(runs["restarted"], field))
+        worst = max(worst, testing.relative_max_difference(
+            b.internal(n), a.internal(n)))
+    lines.append("plastic right zone: epsilonP max %.2e in it, %.1e in the "
+                 "elastic zone; restart after 250 of 500 steps: %.1e from "
+                 "the whole run (%s)" % (eps[~left].max(),
+                                         np.abs(eps[left]).max(), worst,
+                                         os.path.basename(runs["whole"])))
+    if not eps[~left].max() > 0 or np.abs(eps[left]).max() != 0:
+        failures.append("plastic zone: epsilonP %.2e in it, %.2e outside"
+                        % (eps[~left].max(), np.abs(eps[left]).max()))
+    if os.path.basename(runs["whole"]) != \
+            os.path.basename(runs["restarted"]) or worst > 1e-12:
+        failures.append("plastic restart: %.2e from the whole run" % worst)
+
+
 def parallel(root, serial, lines, failures):
     """Two ranks cut at the interface equal the serial run."""
     case = os.path.join(root, "wave-parallel")
@@ -281,6 +336,7 @@ def body():
     serial = wave(root, "compatible", lines, failures)
     wave(root, "constrained", lines, failures)
     free_body(root, lines, failures)
+    plastic_restart(root, lines, failures)
     parallel(root, serial, lines, failures)
     refused(root, serial, lines, failures)
     return testing.verdict(lines, failures)

@@ -47,8 +47,13 @@ void Foam::symmetricEigen
     const scalar J2 = 0.5*magSqr(s);
 
     // A multiple of I, or so near it that the Lode angle's cube of
-    // sqrt(J2) would underflow: the diagonal, exact for A = a I
-    if (J2 <= VSMALL)
+    // sqrt(J2) would underflow: the diagonal, exact for A = a I. The bound
+    // is VSMALL^(2/3), not VSMALL: (J2/3)^(3/2) is 0 below about 1e-205,
+    // and a cell just ahead of a wave (F - I of 1e-110, the scheme's
+    // decaying precursor) divided by it (found 2026-12-04 with an elastic
+    // zone next to a vonMisesPlastic one)
+    static const scalar tiny = Foam::pow(VSMALL, 2.0/3.0);
+    if (J2 <= tiny)
     {
         values = vector(A.xx(), A.yy(), A.zz());
         vectors = tensor::I;
