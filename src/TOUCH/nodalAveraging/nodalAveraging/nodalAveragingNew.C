@@ -75,6 +75,18 @@ Foam::autoPtr<Foam::nodalAveraging> Foam::nodalAveraging::New
 
     autoPtr<nodalAveraging> average(cstrIter()(mesh));
 
+    // The averages are over a point's cells, which may be of different
+    // materials: one law's pointwise stress only
+    if (!law.uniformMaterial())
+    {
+        FatalIOErrorInFunction(controls)
+            << "Entry 'nodalAveraging " << type << "' in " << controls.name()
+            << " with several materials ('materials' in constant/"
+            << "mechanicalProperties): the averages take one law" << nl
+            << "Valid: nodalAveraging off, or one material" << nl
+            << exit(FatalIOError);
+    }
+
     if (!average->suits(law))
     {
         FatalIOErrorInFunction(controls)
