@@ -34,7 +34,8 @@ Extras: --with-meshing (bin/inpToGmsh, gmshToFoam)
   - refused with a FatalIOError naming the culprit: a zone missing from
     'materials' ('in no listed zone' and the mesh's zones), a zone that is
     not in the mesh ('middle' and the valid names), 'materials' with the
-    single law's entries beside it.
+    single law's entries beside it, angularMomentumPreservation on and
+    nodal averaging with several materials (both assume one law).
 Work folders: test/runs/bimaterial/.
 """
 
@@ -307,13 +308,27 @@ def refused(root, serial, lines, failures):
          + materials([("left", RHO1), ("right", RHO2)]),
          ["mechanicalProperties", "use one form", "model", "rho"]),
     ]
-    for label, text, words in cases:
+    two = materials([("left", RHO1), ("right", RHO2)])
+    controls = [
+        ("angular momentum preservation", two,
+         ["fvSolution", "angularMomentumPreservation",
+          "several materials", "set angularMomentumPreservation off"],
+         ("TOUCH/angularMomentumPreservation", "on")),
+        ("nodal averaging", two,
+         ["fvSolution", "nodalAveraging deformation",
+          "several materials", "nodalAveraging off"],
+         ("TOUCH/nodalAveraging", "deformation")),
+    ]
+    cases = [c + (None,) for c in cases] + controls
+    for label, text, words, control in cases:
         case = os.path.join(root, "refused-" + label.replace(" ", "-"))
         if os.path.isdir(case):
             shutil.rmtree(case)
         shutil.copytree(serial, case, ignore=shutil.ignore_patterns(
             "processor*", "[1-9]*", "0.[0-9]*", "postProcessing", "log.*"))
         write_properties(case, text)
+        if control:
+            run.foam_set(case, "system/fvSolution", *control)
         log = os.path.join(case, "log.touchFoam")
         with open(log, "w") as f:
             status = subprocess.call(["touchFoam"], cwd=case, stdout=f,
