@@ -46,6 +46,7 @@ Usage
 #include "touchSolid.H"
 #include "runProgress.H"
 #include "declaredEntry.H"
+#include "sigFpe.H"
 
 // * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
 
@@ -109,6 +110,12 @@ int main(int argc, char *argv[])
         Foam::FatalError.exit();
     }
     #include "foamDlOpenLibs.H"
+
+    // While the input is read, a number that overflows (1e999 in a field
+    // or dictionary) is inf, not a floating-point trap inside OpenFOAM's
+    // parser: the checks of the entries and of the initial state name it
+    sigFpe::ignore readingInput;
+
     #include "createTime.H"
     #include "createMesh.H"
 
@@ -139,6 +146,27 @@ int main(int argc, char *argv[])
         }
     }
 
+    // An entry of controlDict neither OpenFOAM's Time nor touchFoam reads
+    // (maxCo, adjustTimeStep of a fluid solver, a misspelt one): OpenFOAM
+    // ignores it; say so, naming the nearest valid one
+    entryDeclaration::checkEntries
+    (
+        runTime.controlDict(),
+        "system/controlDict",
+        {
+            "application", "startFrom", "startTime", "stopAt", "endTime",
+            "deltaT", "writeControl", "writeInterval", "purgeWrite",
+            "secondaryWriteControl", "secondaryWriteInterval",
+            "secondaryPurgeWrite", "writeFormat", "writeVersion",
+            "writeCompression", "writePrecision", "timeFormat",
+            "timePrecision", "graphFormat", "runTimeModifiable", "libs",
+            "functions", "DebugSwitches", "InfoSwitches",
+            "OptimisationSwitches", "DimensionedConstants", "DimensionSets",
+            "fileHandler"
+        },
+        false
+    );
+
     // Before the fields are read: a patch type the solid cannot use is
     // named with what to use instead
     touchSolid::checkPatchTypes(mesh);
@@ -152,8 +180,11 @@ int main(int argc, char *argv[])
         FatalErrorInFunction
             << "The initial state at time " << runTime.timeName()
             << " has an inverted cell (det F <= 0) or a non-finite value"
+            << " (in lm, F or an input that overflowed)" << nl
             << exit(FatalError);
     }
+
+    readingInput.restore();
 
     runProgress progress(mesh, solid, maxSteps);
 
@@ -169,16 +200,25 @@ int main(int argc, char *argv[])
 
         if (!solid.advance(dt))
         {
-            // The state of the step's start is restored: write it
+            // The state of the step's start is restored: write it, unless
+            // its time folder exists (the start time, or a write time of
+            // this run holding the same state): never overwrite one
             runTime.setTime(runTime.value() - dt, runTime.timeIndex() - 1);
-            solid.writeOutputFields();
-            runTime.writeNow();
+            const bool written = isDir(runTime.timePath());
+            if (!written)
+            {
+                solid.writeOutputFields();
+                runTime.writeNow();
+            }
 
             FatalErrorInFunction
                 << "Inverted cell (det F <= 0) or non-finite value during"
-                << " the step to time " << runTime.value() + dt
-                << " (the cell is named above)" << nl
-                << "    The last good state is written at time "
+                << " the step " << runTime.value() << " -> "
+                << runTime.value() + dt << " (dt = " << dt << "; the cell,"
+                << " its position, J and the Runge-Kutta stage are named"
+                << " above)" << nl
+                << "    The last good state is "
+                << (written ? "the existing time folder " : "written at time ")
                 << runTime.timeName() << nl
                 << exit(FatalError);
         }

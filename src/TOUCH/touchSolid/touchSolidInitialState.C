@@ -18,6 +18,9 @@ Description
 #include "emptyFvPatch.H"
 #include "clampedFvPatchVectorField.H"
 #include "symmetricPlaneFvPatchVectorField.H"
+#include "localIOdictionary.H"
+#include "entryDeclaration.H"
+#include "FlatOutput.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -37,6 +40,89 @@ static IOobject inputIO(const fvMesh& mesh, const word& name)
         IOobject::NO_WRITE,
         false
     );
+}
+
+
+//- Whether a field file exists at io, of any class; one of another class
+//  than volVectorField (a volScalarField U, a pointVectorField) is refused
+//  naming the class (OpenFOAM would take it for absent)
+static bool fieldExists(IOobject& io)
+{
+    if (!io.typeHeaderOk<volVectorField>(false))
+    {
+        return false;
+    }
+
+    if (io.headerClassName() != volVectorField::typeName)
+    {
+        FatalErrorInFunction
+            << "Field " << io.objectPath() << " has class "
+            << io.headerClassName() << "; the initial state needs a "
+            << volVectorField::typeName << " (FoamFile class)" << nl
+            << exit(FatalError);
+    }
+
+    return true;
+}
+
+
+//- Before OpenFOAM reads the field: every patch of the mesh that needs a
+//  condition has an entry in boundaryField, of a solid type.  OpenFOAM
+//  would list its fluid types for a misspelt one, or say 'Cannot find
+//  patchField entry' for a missing one without naming what to write
+static void checkConditionTypes(const fvMesh& mesh, const IOobject& io)
+{
+    const localIOdictionary fieldDict
+    (
+        IOobject
+        (
+            io.name(),
+            io.instance(),
+            io.local(),
+            io.db(),
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        volVectorField::typeName
+    );
+
+    const dictionary& conditions = fieldDict.subDict("boundaryField");
+    const wordList solidTypes(solidFluxFvPatchVectorField::types());
+
+    for (const fvPatch& patch : mesh.boundary())
+    {
+        if (patch.coupled() || isA<emptyFvPatch>(patch))
+        {
+            continue;
+        }
+
+        const entry* eptr = conditions.findEntry(patch.name(), keyType::REGEX);
+        if (!eptr || !eptr->isDict())
+        {
+            FatalIOErrorInFunction(conditions)
+                << "Patch " << patch.name() << " of the mesh has no entry in"
+                << " boundaryField of " << io.objectPath() << nl
+                << "    Give it a solid boundary condition, e.g. "
+                << patch.name() << " { type traction; }" << nl
+                << "    Valid types: " << flatOutput(solidTypes) << nl
+                << exit(FatalIOError);
+        }
+
+        const word type(eptr->dict().get<word>("type"));
+        if (!solidTypes.found(type))
+        {
+            const word near(entryDeclaration::nearest(type, solidTypes));
+            FatalIOErrorInFunction(eptr->dict())
+                << "Entry boundaryField/" << patch.name() << "/type '" << type
+                << "' in " << io.objectPath()
+                << " is not a solid boundary condition"
+                << (near.empty() ? "" : ": did you mean '") << near
+                << (near.empty() ? "" : "'?") << nl
+                << "    Valid types: " << flatOutput(solidTypes) << nl
+                << exit(FatalIOError);
+        }
+    }
 }
 
 
@@ -105,8 +191,8 @@ Foam::tmp<Foam::volVectorField> Foam::touchSolid::initialMomentum
 
     IOobject lmIO(inputIO(mesh, "lm"));
     IOobject UIO(inputIO(mesh, "U"));
-    const bool haveLm = lmIO.typeHeaderOk<volVectorField>(true);
-    const bool haveU = UIO.typeHeaderOk<volVectorField>(true);
+    const bool haveLm = fieldExists(lmIO);
+    const bool haveU = fieldExists(UIO);
 
     if (!haveLm && !haveU)
     {
@@ -123,6 +209,7 @@ Foam::tmp<Foam::volVectorField> Foam::touchSolid::initialMomentum
 
     if (haveLm)
     {
+        checkConditionTypes(mesh, lmIO);
         tmp<volVectorField> tlm(new volVectorField(lmIO, mesh));
         checkDimensions(tlm(), momentumDims, "linear momentum");
         checkConditions(tlm());
@@ -178,6 +265,7 @@ Foam::tmp<Foam::volVectorField> Foam::touchSolid::initialMomentum
 
     // U only: lm = rho U with U's boundary conditions, the patch values
     // scaled by their cells' density as the internal ones
+    checkConditionTypes(mesh, UIO);
     const volVectorField U(UIO, mesh);
     checkDimensions(U, dimVelocity, "velocity");
     checkConditions(U);
