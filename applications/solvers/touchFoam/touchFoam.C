@@ -167,6 +167,46 @@ int main(int argc, char *argv[])
         false
     );
 
+    // A decomposed case runs on as many ranks as it has processor folders:
+    // OpenFOAM itself accepts stale extra folders (ignored) and, when the
+    // decomposeParDict was changed, a decomposition for more ranks than
+    // run, whose processor patches name ranks that do not exist
+    if (Pstream::parRun())
+    {
+        label nFolders = 0;
+        if (Pstream::master())
+        {
+            const fileNameList dirs
+            (
+                readDir(runTime.globalPath(), fileName::DIRECTORY)
+            );
+            for (const fileName& dir : dirs)
+            {
+                const std::string name(dir);
+                if
+                (
+                    name.size() > 9 && name.compare(0, 9, "processor") == 0
+                 && name.find_first_not_of("0123456789", 9)
+                 == std::string::npos
+                )
+                {
+                    ++nFolders;
+                }
+            }
+        }
+        Pstream::scatter(nFolders);
+
+        if (nFolders != Pstream::nProcs())
+        {
+            FatalErrorInFunction
+                << "The case " << runTime.globalPath() << " has " << nFolders
+                << " processor folders (processor0 ...) but runs on "
+                << Pstream::nProcs() << " ranks: decompose it again for "
+                << Pstream::nProcs() << " (decomposePar -force) or run on "
+                << nFolders << nl << exit(FatalError);
+        }
+    }
+
     // Before the fields are read: a patch type the solid cannot use is
     // named with what to use instead
     touchSolid::checkPatchTypes(mesh);

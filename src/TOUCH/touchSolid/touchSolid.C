@@ -254,6 +254,21 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
         controls_, "system/fvSolution TOUCH", "reconstruction or FUpdate"
     );
 
+    // A modulus in the wrong unit (MPa for Pa) is legal but gives a wave
+    // speed no material has: elastic solids lie between a soft gel's
+    // (about 10 m/s) and diamond's (about 18000 m/s)
+    const scalar Up = law_->Up();
+    if (Up < 10 || Up > 20000)
+    {
+        WarningInFunction
+            << "The longitudinal wave speed Up = " << Up << " m/s of the law"
+            << " in constant/mechanicalProperties lies outside 10 .. 20000"
+            << " m/s, the range of solid materials: are E [Pa] and rho"
+            << " [kg/m^3] in SI units (E " << law_->mu()*2*(1 + law_->lambda()
+               /(2*(law_->lambda() + law_->mu()))) << " Pa, rho "
+            << law_->rho() << " kg/m^3)?" << endl;
+    }
+
     if (mesh.time().value() == 0)
     {
         checkInitialVelocity();

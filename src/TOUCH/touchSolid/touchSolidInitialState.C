@@ -46,23 +46,47 @@ static IOobject inputIO(const fvMesh& mesh, const word& name)
 //- Whether a field file exists at io, of any class; one of another class
 //  than volVectorField (a volScalarField U, a pointVectorField) is refused
 //  naming the class (OpenFOAM would take it for absent)
-static bool fieldExists(IOobject& io)
+template<class FieldType>
+static bool fieldExists(const IOobject& io)
 {
-    if (!io.typeHeaderOk<volVectorField>(false))
+    IOobject header(io);
+    if (!header.typeHeaderOk<FieldType>(false))
     {
         return false;
     }
 
-    if (io.headerClassName() != volVectorField::typeName)
+    if (header.headerClassName() != FieldType::typeName)
     {
         FatalErrorInFunction
             << "Field " << io.objectPath() << " has class "
-            << io.headerClassName() << "; the initial state needs a "
-            << volVectorField::typeName << " (FoamFile class)" << nl
+            << header.headerClassName() << "; touchSolid reads "
+            << io.name() << " as a " << FieldType::typeName
+            << " (FoamFile class)" << nl
             << exit(FatalError);
     }
 
     return true;
+}
+
+
+//- Every cell of the mesh has a positive, finite volume: the update
+//  divides by it (a zero or inverted cell would give inf or a step that
+//  runs backwards)
+static void checkVolumes(const fvMesh& mesh)
+{
+    const scalarField& V = mesh.V().field();
+    forAll(V, celli)
+    {
+        if (!(V[celli] > 0) || !std::isfinite(V[celli]))
+        {
+            FatalErrorInFunction
+                << "Cell " << celli << " of the mesh (constant/polyMesh) at "
+                << mesh.C()[celli] << " has volume " << V[celli]
+                << ": every cell needs a positive volume (inverted or"
+                << " collapsed cell; see checkMesh)" << nl
+                << exit(FatalError);
+        }
+    }
 }
 
 
@@ -191,8 +215,13 @@ Foam::tmp<Foam::volVectorField> Foam::touchSolid::initialMomentum
 
     IOobject lmIO(inputIO(mesh, "lm"));
     IOobject UIO(inputIO(mesh, "U"));
-    const bool haveLm = fieldExists(lmIO);
-    const bool haveU = fieldExists(UIO);
+    checkVolumes(mesh);
+    const bool haveLm = fieldExists<volVectorField>(lmIO);
+    const bool haveU = fieldExists<volVectorField>(UIO);
+
+    // F is read when present (touchSolid's constructor): one of another
+    // class would be taken for absent, the identity
+    fieldExists<volTensorField>(inputIO(mesh, "F"));
 
     if (!haveLm && !haveU)
     {
