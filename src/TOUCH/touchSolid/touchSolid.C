@@ -269,6 +269,26 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
             << law_->rho() << " kg/m^3)?" << endl;
     }
 
+    // An initial F whose stress overflows (a component of 1e300) is
+    // finite with J > 0, and would stop the first step with a
+    // floating-point trap: name it while the input is read
+    {
+        tensorField P(F_.size());
+        law_->stress(F_.primitiveField(), P);
+        forAll(P, celli)
+        {
+            if (!std::isfinite(magSqr(P[celli])))
+            {
+                FatalErrorInFunction
+                    << "The stress of cell " << celli << " at "
+                    << mesh.C()[celli] << " overflows for the initial F = "
+                    << F_[celli] << " read from "
+                    << F_.time().timeName()/"F" << " (law "
+                    << law_->type() << ')' << nl << exit(FatalError);
+            }
+        }
+    }
+
     if (mesh.time().value() == 0)
     {
         checkInitialVelocity();
