@@ -226,6 +226,13 @@ int main(int argc, char *argv[])
 
     readingInput.restore();
 
+    // The state a restart reads (lm, F, D, pointD, the law's state: the
+    // objects that write themselves with the time) is written with at
+    // least 17 significant digits whatever writePrecision says, so that a
+    // restart continues exactly; the fields written for viewing (U, J,
+    // sigma, ...) keep writePrecision (read again with the controlDict)
+    const unsigned int statePrecision = 17;
+
     runProgress progress(mesh, solid, maxSteps);
 
     Info<< "Starting time loop\n" << endl;
@@ -248,6 +255,10 @@ int main(int argc, char *argv[])
             if (!written)
             {
                 solid.writeOutputFields();
+                IOstream::defaultPrecision
+                (
+                    max(IOstream::defaultPrecision(), statePrecision)
+                );
                 runTime.writeNow();
             }
 
@@ -263,10 +274,13 @@ int main(int argc, char *argv[])
                 << exit(FatalError);
         }
 
+        const unsigned int viewPrecision = IOstream::defaultPrecision();
+
         if (step == maxSteps)
         {
             Info<< "Reached maxSteps " << maxSteps << nl;
             solid.writeOutputFields();
+            IOstream::defaultPrecision(max(viewPrecision, statePrecision));
             runTime.writeAndEnd();
         }
         else if (runTime.writeTime())
@@ -274,7 +288,9 @@ int main(int argc, char *argv[])
             solid.writeOutputFields();
         }
 
+        IOstream::defaultPrecision(max(viewPrecision, statePrecision));
         runTime.write();
+        IOstream::defaultPrecision(viewPrecision);
 
         runTime.printExecutionTime(Info);
 
