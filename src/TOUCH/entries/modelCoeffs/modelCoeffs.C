@@ -137,12 +137,13 @@ void Foam::checkUnusedCoeffs
         if (dict.isDict(coeffsName) && !coeffsRead().found(coeffsName))
         {
             coeffsRead().insert(coeffsName);
-            IOWarningInFunction(dict)
-                << "Sub-dictionary " << coeffsName << " in "
-                << dict.name().c_str() << " is not read: the model it"
-                << " belongs to (" << word(coeffsName.substr(0, coeffsName.size() - 6))
-                << ") is not selected by " << selectedBy.c_str() << nl
-                << "    Its entries are ignored" << endl;
+            // A note, not a warning: the tutorials keep the entries of
+            // the models they can switch to
+            Info<< "Note: sub-dictionary " << coeffsName << " in "
+                << dict.name().c_str() << " is not read: its model ("
+                << word(coeffsName.substr(0, coeffsName.size() - 6))
+                << ") is not selected by " << selectedBy.c_str()
+                << "; its entries are not checked" << endl;
         }
     }
 }
