@@ -223,6 +223,18 @@ Foam::tmp<Foam::volVectorField> Foam::touchSolid::initialMomentum
     // class would be taken for absent, the identity
     fieldExists<volTensorField>(inputIO(mesh, "F"));
 
+    if (!haveLm && !haveU && mesh.time().value() > 0)
+    {
+        FatalErrorInFunction
+            << "Time folder " << mesh.time().timePath() << " holds neither"
+            << " lm nor U: it is incomplete (a run stopped while writing"
+            << " it?). touchFoam writes lm, F, D and pointD at every write"
+            << " time." << nl
+            << "    Remove it (rm -r " << mesh.time().timeName() << ") to"
+            << " restart from the previous write time" << nl
+            << exit(FatalError);
+    }
+
     if (!haveLm && !haveU)
     {
         FatalErrorInFunction
