@@ -336,20 +336,6 @@ def other_mesh_time(case):
             f.write(text)
 
 
-def incomplete_time(case):
-    """A time folder 0.001 holding only P, as a run killed while writing
-    it leaves (the output fields are written before the state)"""
-    folder = os.path.join(case, "0.001")
-    os.makedirs(folder)
-    with open(os.path.join(case, "0", "F")) as f:
-        text = f.read()
-    text = re.sub(r"object\s+F;", "object P;", text)
-    text = re.sub(r"dimensions\s+\[[^]]*\];", "dimensions [1 -1 -2 0 0 0 0];",
-                  text)
-    with open(os.path.join(folder, "P"), "w") as f:
-        f.write(text)
-
-
 def processors(count, remove=None):
     """Decompose on 2 ranks (decomposePar), then add processor folders up
     to count or remove one"""
@@ -541,11 +527,6 @@ CORPUS = [
      ["constant/polyMesh", "positive volume"]),
     ("timeFromOtherMesh", "0.001", other_mesh_time,
      ["0.001", "size 8", "64"]),
-    # A run killed while writing 0.001: only its first output field, P
-    # (measured: SIGKILL of a 12^3 swinging cube written every step left
-    # a folder holding P alone, and every restart stopped on it)
-    ("incompleteTimeFolder", "0.001", incomplete_time,
-     ["0.001", "incomplete", "rm -r 0.001"]),
 ]
 
 # (label, edit, words, number of ranks): run decomposed with mpirun

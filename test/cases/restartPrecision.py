@@ -13,7 +13,13 @@ both written every 1 ms at writePrecision 12 (the tutorials'), run
 the files of the state (lm, F, D, pointD) and of the viewing fields (U, J)
 at 4 ms must be byte-identical; and a second uninterrupted run must write
 every file of every time folder byte-identical to the first (a run is
-reproducible).  The state files carry 17 significant
+reproducible).  A run killed while writing leaves its last time folder
+cut short (measured: SIGKILL of a 12^3 swinging cube written every step
+left a folder holding only P, the first output field written, and every
+restart stopped on it): the part run's restart is made from such a
+folder, 3 ms holding only the P the whole run wrote there; touchFoam must
+warn that 3 ms is incomplete, move it to 0.003.incomplete, start from
+2 ms, and end identical.  The state files carry 17 significant
 digits, the viewing fields (U) 12.  Before 2026-12-04 the state was
 written at writePrecision too and a restart from 12 digits differed
 (measured on the swinging cube case of this test at commit a546ea2: lm,
@@ -23,6 +29,7 @@ Work folders: test/runs/restartPrecision/.
 
 import os
 import re
+import shutil
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
@@ -65,8 +72,17 @@ def body():
         set_end(part, 0.002)
         run.run(["touchFoam"], part, timeout=testing.RUN_TIMEOUT)
         set_end(part, 0.004)
-        run.run(["touchFoam"], part, name="touchFoam-restart",
-                timeout=testing.RUN_TIMEOUT)
+        cut = os.path.join(part, "0.003")
+        os.makedirs(cut)
+        shutil.copy(os.path.join(whole, "0.003", "P"), cut)
+        log = run.run(["touchFoam"], part, name="touchFoam-restart",
+                      timeout=testing.RUN_TIMEOUT)
+        with open(log) as f:
+            text = " ".join(f.read().split())
+        if not re.search(r"Time folder 0\.003 holds neither lm nor U: it is "
+                         r"incomplete .* Moved to 0\.003\.incomplete", text):
+            failures.append("%s: no warning that 0.003 is incomplete"
+                            % tutorial)
         same = []
         for name in FILES:
             with open(os.path.join(whole, "0.004", name), "rb") as f:

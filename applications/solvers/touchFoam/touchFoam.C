@@ -116,6 +116,65 @@ int main(int argc, char *argv[])
     // parser: the checks of the entries and of the initial state name it
     sigFpe::ignore readingInput;
 
+    // A run killed while writing leaves its last time folder cut short:
+    // the output fields are written before the state (lm, F, D, pointD).
+    // Before the run's Time selects the latest folder, set aside (rename
+    // to <time>.incomplete) every latest folder that lacks lm and U on
+    // some rank, saying so: the run starts from the latest complete one
+    // and writes the time again when it gets there
+    {
+        Foam::Time probe
+        (
+            Foam::Time::controlDictName,
+            args.rootPath(),
+            args.caseName(),
+            "system",
+            "constant",
+            false,
+            false
+        );
+        auto holdsState = [&](const word& timeName)
+        {
+            return returnReduce
+            (
+                isFile(probe.path()/timeName/"lm")
+             || isFile(probe.path()/timeName/"U"),
+                andOp<bool>()
+            );
+        };
+
+        for (instantList times(probe.times()); times.size(); )
+        {
+            const instant& latest = times.last();
+            if
+            (
+                latest.value() <= 0
+             || latest.name() != probe.timeName()
+             || holdsState(latest.name())
+            )
+            {
+                break;
+            }
+
+            const fileName cut(probe.path()/latest.name());
+            const fileName aside(cut + ".incomplete");
+            rmDir(aside);
+            mv(cut, aside);
+
+            WarningInFunction
+                << "Time folder " << latest.name() << " holds neither lm"
+                << " nor U: it is incomplete (a run stopped while writing"
+                << " it). Moved to " << aside.name() << "; the run starts"
+                << " from the latest complete time folder" << endl;
+
+            times = probe.times();
+            if (times.size())
+            {
+                probe.setTime(times.last(), 0);
+            }
+        }
+    }
+
     #include "createTime.H"
     #include "createMesh.H"
 
