@@ -39,10 +39,22 @@ On a 4^3 swinging cube, one mistake at a time:
     2.5 degree wedge meshed by blockMesh); and symmetryPlane with 0/U
     saying symmetryPlane too (the OpenFOAM way); the error names the
     patch, its type, the boundary file and the solid conditions,
-  - a 2D mesh (empty front and back) two cells thick.
+  - a 2D mesh (empty front and back) two cells thick;
+  - the corpus (CORPUS, PARALLEL; listed in test/badInputs.md): every
+    entry of the TOUCH dictionary and its Coeffs sub-dictionaries, of
+    every law in constant/mechanicalProperties, of the solid boundary
+    conditions, of solidMonitor and touchFoam's controlDict entries
+    (misspelt: the error names the nearest valid name; out of range;
+    missing; of the wrong type; used by another model), fields of the
+    wrong class or size, a patch missing from 0/U, NaN and 1e999 in an
+    initial field, an inverted initial F, an inverted and a collapsed mesh,
+    a time folder from another mesh, truncated and unreadable files, and a
+    case decomposed on 2 run with a processor folder missing or an extra
+    one (mpirun, 2 ranks).
 Each run must exit non-zero without a signal (the status of a run killed
 by one is negative, 128 + signal through a shell), its log must contain
-every expected word, and no time folder may be written.  Every mistake is
+every expected word, no time folder may be written and the files of 0/
+must be unchanged.  Every mistake is
 tried; the failure names
 all that were not refused properly.
 Work folders: test/runs/badInput/.
@@ -237,7 +249,306 @@ PATCH_TYPES = [
 ]
 
 
-def check(root, label, path, edit, words, commands=()):
+# ---------------------------------------------------------------------------
+# The corpus beyond the mistakes above: every entry of the laws, the TOUCH
+# dictionary and its Coeffs, the solid conditions, solidMonitor and
+# controlDict; meshes, fields, time folders, decomposed cases, files.
+# (label, files, edits, words): an edit is (pattern, replacement) or a
+# function of the case folder.
+
+def TOUCH_ADD(text):
+    """An edit adding text to system/fvSolution TOUCH"""
+    return (r"(CFL\s+[0-9.]+;)", r"\1\n    " + text)
+
+
+def LAW(text):
+    """An edit replacing the law's model entry by text"""
+    return (r"model\s+\w+;", text)
+
+
+def U_PATCH(text):
+    """An edit replacing the X0 condition of 0/U (symmetricPlane)"""
+    return (r"type\s+symmetricPlane;", text)
+
+
+def rewrite_points(change):
+    """An edit of constant/polyMesh/points: every point (x y z) becomes
+    change(x, y, z)"""
+    def edit(case):
+        path = os.path.join(case, "constant", "polyMesh", "points")
+        with open(path) as f:
+            text = f.read()
+        head, sep, body = text.partition("\n(\n")
+
+        def one(m):
+            return "(%.12g %.12g %.12g)" % change(*map(float, m.groups()))
+        body = re.sub(r"\(([-0-9.e+]+) ([-0-9.e+]+) ([-0-9.e+]+)\)", one, body)
+        with open(path, "w") as f:
+            f.write(head + sep + body)
+    return edit
+
+
+def write_file(relative, content, mode="w"):
+    def edit(case):
+        path = os.path.join(case, relative)
+        if os.path.isdir(path):
+            shutil.rmtree(path)
+        elif os.path.exists(path):
+            os.remove(path)
+        if content is None:
+            os.makedirs(path)
+            return
+        with open(path, mode) as f:
+            f.write(content)
+    return edit
+
+
+def truncate(relative, fraction):
+    def edit(case):
+        path = os.path.join(case, relative)
+        with open(path) as f:
+            text = f.read()
+        with open(path, "w") as f:
+            f.write(text[:int(len(text)*fraction)])
+    return edit
+
+
+def other_mesh_time(case):
+    """A time folder 0.001 holding lm and F of a 2 x 2 x 2 mesh (8 cells)
+    in the 4 x 4 x 4 case: latestTime starts from it"""
+    folder = os.path.join(case, "0.001")
+    os.makedirs(folder)
+    for name, cls, dims, value in [
+            ("lm", "volVectorField", "[1 -2 -1 0 0 0 0]", "(0 0 0)"),
+            ("F", "volTensorField", "[0 0 0 0 0 0 0]",
+             "(1 0 0 0 1 0 0 0 1)")]:
+        with open(os.path.join(case, "0", "U")) as f:
+            text = f.read()
+        text = re.sub(r"class\s+\w+;", "class %s;" % cls, text)
+        text = re.sub(r"object\s+U;", "object %s;" % name, text)
+        text = re.sub(r"dimensions\s+\[[^]]*\];", "dimensions %s;" % dims,
+                      text)
+        text = re.sub(r"internalField\s+[^;]*;",
+                      "internalField nonuniform List<%s> 8(%s);"
+                      % ("vector" if name == "lm" else "tensor",
+                         " ".join([value]*8)), text)
+        with open(os.path.join(folder, name), "w") as f:
+            f.write(text)
+
+
+def processors(count, remove=None):
+    """Decompose on 2 ranks (decomposePar), then add processor folders up
+    to count or remove one"""
+    def edit(case):
+        dictionary = os.path.join(case, "system", "decomposeParDict")
+        with open(dictionary) as f:
+            text = f.read()
+        text = re.sub(r"numberOfSubdomains\s+\d+;", "numberOfSubdomains 2;",
+                      text)
+        text = re.sub(r"method\s+\w+;", "method scotch;", text)
+        with open(dictionary, "w") as f:
+            f.write(text)
+        run.run(["decomposePar", "-force"], case)
+        for i in range(2, count):
+            shutil.copytree(os.path.join(case, "processor1"),
+                            os.path.join(case, "processor%d" % i))
+        if remove is not None:
+            shutil.rmtree(os.path.join(case, "processor%d" % remove))
+    return edit
+
+
+FV = "system/fvSolution"
+MP = "constant/mechanicalProperties"
+CD = "system/controlDict"
+PLASTIC = "model vonMisesPlastic;\nvonMisesPlasticCoeffs { %s }"
+
+CORPUS = [
+    # system/fvSolution TOUCH
+    ("TOUCHtimeSchem", FV, TOUCH_ADD("timeSchem RK3;"),
+     ["'timeSchem'", "fvSolution", "did you mean 'timeScheme'",
+      "nodalAveraging"]),
+    ("TOUCHnodalAverging", FV, TOUCH_ADD("nodalAverging pressure;"),
+     ["'nodalAverging'", "fvSolution", "did you mean 'nodalAveraging'"]),
+    ("TOUCHCFlMisspelt", FV, (r"CFL(\s+[0-9.]+;)", r"CFl\1"),
+     ["'CFl'", "fvSolution", "did you mean 'CFL'"]),
+    ("TOUCHCFLzero", FV, (r"CFL\s+[0-9.]+;", "CFL 0;"),
+     ["'CFL'", "fvSolution", "0 < CFL <= 1"]),
+    ("TOUCHCFLnegative", FV, (r"CFL\s+[0-9.]+;", "CFL -0.3;"),
+     ["'CFL'", "fvSolution", "0 < CFL <= 1"]),
+    ("TOUCHCFLword", FV, (r"CFL\s+[0-9.]+;", "CFL fast;"),
+     ["fast", "fvSolution", "scalar"]),
+    ("TOUCHriemannSolver", FV, (r"riemannSolver\s+\w+;",
+                                "riemannSolver HLLC;"),
+     ["HLLC", "fvSolution", "acoustic"]),
+    ("TOUCHangularMomentum", FV,
+     (r"angularMomentumPreservation\s+\w+;",
+      "angularMomentumPreservation maybe;"),
+     ["maybe", "fvSolution", "angularMomentumPreservation"]),
+    ("TOUCHangularMomentumMissing", FV,
+     (r"angularMomentumPreservation\s+\w+;", ""),
+     ["angularMomentumPreservation", "fvSolution"]),
+    ("TOUCHreconstructionMissing", FV, (r"reconstruction\s+\w+;", ""),
+     ["reconstruction", "fvSolution"]),
+    ("TOUCHmissing", FV, (r"TOUCH\s*\{", "TOUCHE\n{"),
+     ["TOUCH", "fvSolution"]),
+    ("TOUCHsymmetricPlanesNumber", FV,
+     (r"symmetricPlanes\s+\w+;", "symmetricPlanes 1;"),
+     ["symmetricPlanes", "fvSolution"]),
+    ("compatibleCoeffsUpwinding", FV,
+     TOUCH_ADD("compatibleCoeffs { pointUpwinding -1; }"),
+     ["'pointUpwinding'", "fvSolution", "0 <= pointUpwinding"]),
+    ("compatibleCoeffsMisspelt", FV,
+     TOUCH_ADD("compatibleCoeffs { pointUpwindng 1; }"),
+     ["'pointUpwindng'", "compatibleCoeffs", "did you mean 'pointUpwinding'",
+      "jumpShare", "pointLimiter"]),
+    ("compatibleCoeffsNotDict", FV, TOUCH_ADD("compatibleCoeffs 1;"),
+     ["compatibleCoeffs", "fvSolution", "not a sub-dictionary"]),
+    ("limitedLinearCoeffsEmpty", FV,
+     (r"limitedLinearCoeffs\s*\{[^}]*\}", "limitedLinearCoeffs { }"),
+     ["limiter", "limitedLinearCoeffs"]),
+    ("limitedLinearCoeffsMisspelt", FV,
+     (r"limiter(\s+\w+;)", r"limiter\1 limitr Venkatakrishnan;"),
+     ["'limitr'", "limitedLinearCoeffs", "did you mean 'limiter'"]),
+    ("fvSolutionTruncated", FV, truncate(FV, 0.7),
+     ["fvSolution"]),
+    # constant/mechanicalProperties: every entry of every law
+    ("lawModelMissing", MP, LAW(""), ["model", "mechanicalProperties"]),
+    ("lawEnegative", MP, (r"\nE\s+[0-9.e+]+;", "\nE -1e7;"),
+     ["'E'", "mechanicalProperties", "0 < E"]),
+    ("lawEmissing", MP, (r"\nE\s+[0-9.e+]+;", "\n"),
+     ["'E'", "mechanicalProperties"]),
+    ("lawEword", MP, (r"\nE\s+[0-9.e+]+;", "\nE stiff;"),
+     ["stiff", "mechanicalProperties", "scalar"]),
+    ("lawRhoZero", MP, (r"\nrho\s+[0-9.e+]+;", "\nrho 0;"),
+     ["'rho'", "mechanicalProperties", "0 < rho"]),
+    ("lawRhoMissing", MP, (r"\nrho\s+[0-9.e+]+;", "\n"),
+     ["'rho'", "mechanicalProperties"]),
+    ("lawNuMinusOne", MP, (r"\nnu\s+[0-9.]+;", "\nnu -1;"),
+     ["'nu'", "mechanicalProperties", "-1 < nu < 0.5"]),
+    ("lawNuMissing", MP, (r"\nnu\s+[0-9.]+;", "\n"),
+     ["'nu'", "mechanicalProperties"]),
+    ("lawUnknownEntry", MP, LAW("model linearElastic;\ndensity 1100;"),
+     ["'density'", "mechanicalProperties", "rho", "Valid entries"]),
+    ("neoHookeanYieldStress", MP,
+     LAW("model neoHookean;\nyieldStress 1e6;"),
+     ["'yieldStress'", "mechanicalProperties", "vonMisesPlasticCoeffs"]),
+    ("linearElasticPlasticCoeffs", MP,
+     LAW("model linearElastic;\n"
+         "vonMisesPlasticCoeffs { yieldStress 1e6; hardeningModulus 0; }"),
+     ["'vonMisesPlasticCoeffs'", "mechanicalProperties", "Valid entries"]),
+    ("plasticYieldStressMisspelt", MP,
+     LAW(PLASTIC % "yieldStres 1e6; yieldStress 1e6; hardeningModulus 0;"),
+     ["'yieldStres'", "vonMisesPlasticCoeffs", "did you mean 'yieldStress'"]),
+    ("plasticYieldStressMissing", MP,
+     LAW(PLASTIC % "hardeningModulus 0;"),
+     ["yieldStress", "vonMisesPlasticCoeffs"]),
+    ("plasticHardeningMissing", MP,
+     LAW(PLASTIC % "yieldStress 1e6;"),
+     ["hardeningModulus", "vonMisesPlasticCoeffs"]),
+    ("plasticYieldStressMeasure", MP,
+     LAW(PLASTIC % "yieldStress 1e6; hardeningModulus 0; "
+         "yieldStressMeasure vonMises;"),
+     ["vonMises", "yieldStressMeasure", "Kirchhoff", "Cauchy"]),
+    ("mechanicalPropertiesGarbage", MP,
+     write_file(MP, "\x00\x01\x02\xff\xfe binary \x00", "w"),
+     ["mechanicalProperties"]),
+    ("mechanicalPropertiesFolder", MP, write_file(MP, None),
+     ["mechanicalProperties"]),
+    ("mechanicalPropertiesTruncated", MP, truncate(MP, 0.8),
+     ["mechanicalProperties"]),
+    # the solid boundary conditions of 0/U
+    ("typeMisspelt", "0/U", U_PATCH("type symetricPlane;"),
+     ["'symetricPlane'", "0/U", "did you mean 'symmetricPlane'", "clamped",
+      "rigidWall", "traction"]),
+    ("patchMissing", "0/U", (r'"\(X0\|Y0\|Z0\)"', '"(Y0|Z0)"'),
+     ["X0", "0/U", "no entry", "symmetricPlane"]),
+    ("typeMissing", "0/U", U_PATCH("value uniform (0 0 0);"),
+     ["type", "0/U"]),
+    ("clampedKeyword", "0/U", U_PATCH("type clamped; velocity (0 0 0);"),
+     ["'velocity'", "0/U", "clamped"]),
+    ("tractionPresure", "0/U", U_PATCH("type traction; presure uniform 1;"),
+     ["'presure'", "0/U", "did you mean 'pressure'"]),
+    ("prescribedVelocityMissing", "0/U", U_PATCH("type prescribedVelocity;"),
+     ["velocity", "0/U", "X0"]),
+    ("rigidWallNoNormal", "0/U", U_PATCH("type rigidWall; point (0 0 0);"),
+     ["normal", "0/U", "X0"]),
+    ("rigidWallZeroNormal", "0/U",
+     U_PATCH("type rigidWall; point (0 0 0); normal (0 0 0);"),
+     ["normal", "0/U", "X0"]),
+    ("rigidWallNormalScalar", "0/U",
+     U_PATCH("type rigidWall; point (0 0 0); normal 1;"),
+     ["normal", "0/U"]),
+    ("rigidWallPointMissing", "0/U",
+     U_PATCH("type rigidWall; normal (1 0 0);"),
+     ["point", "0/U", "X0"]),
+    # system/controlDict: solidMonitor and touchFoam's entries
+    ("solidMonitorOrgin", CD,
+     (r"(type\s+solidMonitor;)", r"\1 orgin (0 0 0);"),
+     ["'orgin'", "controlDict", "did you mean 'origin'"]),
+    ("solidMonitorOriginScalar", CD,
+     (r"(type\s+solidMonitor;)", r"\1 origin 1;"),
+     ["origin", "controlDict"]),
+    ("maxStepsNegative", CD, (r"(application\s+\w+;)",
+                              r"\1\nmaxSteps -5;"),
+     ["'maxSteps'", "controlDict", "-1 <= maxSteps"]),
+    ("progressIntervalNegative", CD, (r"(application\s+\w+;)",
+                                      r"\1\nprogressInterval -1;"),
+     ["'progressInterval'", "controlDict", "0 <= progressInterval"]),
+    # fields
+    ("UwrongClass", "0/U", (r"class\s+volVectorField;",
+                            "class volScalarField;"),
+     ["0/U", "volScalarField", "volVectorField"]),
+    ("FwrongClass", "0/F", (r"class\s+volTensorField;",
+                            "class volVectorField;"),
+     ["0/F", "volVectorField", "volTensorField"]),
+    ("UwrongSize", "0/U", (r"internalField\s+[^;]*;",
+                           "internalField nonuniform List<vector> "
+                           "3((0 0 0) (0 0 0) (0 0 0));"),
+     ["0/U", "size 3", "64"]),
+    ("UNaN", "0/U", (r"internalField\s+[^;]*;",
+                     "internalField uniform (nan 0 0);"),
+     ["0/U", "nan"]),
+    ("UInf", "0/U", (r"internalField\s+[^;]*;",
+                     "internalField uniform (1e999 0 0);"),
+     ["0/U", "internalField"]),
+    ("FInverted", "0/F", (r"internalField\s+[^;]*;",
+                          "internalField uniform (-1 0 0 0 1 0 0 0 1);"),
+     ["initial state", "inverted cell", "det F <= 0"]),
+    ("FInf", "0/F", (r"internalField\s+[^;]*;",
+                     "internalField uniform (1e999 0 0 0 1 0 0 0 1);"),
+     ["0/F", "internalField"]),
+    ("UTruncated", "0/U", truncate("0/U", 0.6), ["0/U"]),
+    # meshes and time folders
+    ("meshInverted", "constant/polyMesh/points",
+     rewrite_points(lambda x, y, z: (-x, y, z)),
+     ["Cell 0", "constant/polyMesh", "positive volume", "checkMesh"]),
+    ("meshZeroVolume", "constant/polyMesh/points",
+     rewrite_points(lambda x, y, z: (x, y, 0)),
+     ["constant/polyMesh", "positive volume"]),
+    ("timeFromOtherMesh", "0.001", other_mesh_time,
+     ["0.001", "size 8", "64"]),
+]
+
+# (label, edit, words, number of ranks): run decomposed with mpirun
+PARALLEL = [
+    ("processorMissing", processors(2, remove=1), ["processor"], 2),
+    ("processorExtra", processors(3),
+     ["3 processor folders", "2 ranks", "decomposePar -force"], 2),
+]
+
+
+def tree_digest(folder):
+    """The names and contents of every file below folder"""
+    digest = []
+    for top, _, files in sorted(os.walk(folder)):
+        for name in sorted(files):
+            path = os.path.join(top, name)
+            with open(path, "rb") as f:
+                digest.append((os.path.relpath(path, folder), f.read()))
+    return digest
+
+
+def check(root, label, path, edit, words, commands=(), ranks=None):
     # limitedLinear, so that the limiter is read
     case = cases.prepare("swingingCube", os.path.join(root, label), n=4,
                          touch={"reconstruction": "limitedLinear"})
@@ -246,6 +557,9 @@ def check(root, label, path, edit, words, commands=()):
     edits = edit if isinstance(edit, list) else [edit]
     for one_path, one_edit in zip(paths, edits):
         target = os.path.join(case, one_path)
+        if callable(one_edit):
+            one_edit(case)
+            continue
         if one_edit[1] == "REMOVE\n":
             os.remove(target)
             continue
@@ -271,10 +585,20 @@ def check(root, label, path, edit, words, commands=()):
             f.write(new)
     for command in commands:
         run.run(command, case)
+    before = tree_digest(os.path.join(case, "0"))
+    times_before = set(d for d in os.listdir(case)
+                       if re.match(r"^[0-9.e+-]+$", d))
     log = os.path.join(case, "log.touchFoam")
+    command = ["touchFoam"] if ranks is None else \
+        run.mpirun(ranks, ["touchFoam"])
     with open(log, "w") as f:
-        status = subprocess.call(["touchFoam"], cwd=case, stdout=f,
-                                 stderr=subprocess.STDOUT)
+        try:
+            status = subprocess.call(command, cwd=case, stdout=f,
+                                     stderr=subprocess.STDOUT,
+                                     stdin=subprocess.DEVNULL,
+                                     timeout=testing.RUN_TIMEOUT)
+        except subprocess.TimeoutExpired:
+            return "%s: touchFoam hung (see %s)" % (label, log)
     with open(log) as f:
         output = f.read()
     if status == 0:
@@ -288,17 +612,26 @@ def check(root, label, path, edit, words, commands=()):
         return "%s: the error does not name %s (see %s)" % (
             label, ", ".join(missing), log)
     written = [d for d in os.listdir(case)
-               if re.match(r"^[0-9.e+-]+$", d) and d != "0"]
+               if re.match(r"^[0-9.e+-]+$", d) and d not in times_before]
     if written:
         return "%s: wrote %s" % (label, written)
+    if os.path.isdir(os.path.join(case, "0")) \
+            and tree_digest(os.path.join(case, "0")) != before:
+        return "%s: changed the files of 0/" % label
     return None
 
 
 def body():
     root = testing.work_dir(NAME)
     refused, failures = [], []
-    for mistake in MISTAKES + PATCH_TYPES:
-        failure = check(root, *mistake)
+    everything = MISTAKES + PATCH_TYPES + CORPUS \
+        + [(label, None, edit, words, (), ranks)
+           for label, edit, words, ranks in PARALLEL]
+    for mistake in everything:
+        label, path, edit = mistake[:3]
+        if path is None:
+            path, edit = ["."], [edit]
+        failure = check(root, label, path, edit, *mistake[3:])
         print("  %-26s %s" % (mistake[0], failure or "refused"))
         if failure:
             failures.append(failure)
@@ -306,8 +639,7 @@ def body():
             refused.append(mistake[0])
     if failures:
         raise AssertionError("%d of %d mistakes not refused properly: %s"
-                             % (len(failures),
-                                len(MISTAKES) + len(PATCH_TYPES),
+                             % (len(failures), len(everything),
                                 "; ".join(failures)))
     return "%d mistakes refused with file, entry and valid choices: %s" % (
         len(refused), " ".join(refused))

@@ -41,6 +41,9 @@ STRUCTURAL = {
              " declared solver controls",
     "type": "OpenFOAM's patch field type, named in an error message",
     "value": "OpenFOAM's patch field value entry",
+    "boundaryField": "OpenFOAM's field file structure: the patch"
+                     " conditions, checked to be solid ones before"
+                     " OpenFOAM reads the field",
     "outOfBounds": "a Function1 table's own coefficient (OpenFOAM's),"
                    " read again to integrate the wall's table",
     "interpolationScheme": "a Function1 table's own coefficient"

@@ -46,6 +46,7 @@ Usage
 #include "touchSolid.H"
 #include "runProgress.H"
 #include "declaredEntry.H"
+#include "sigFpe.H"
 
 // * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
 
@@ -109,6 +110,71 @@ int main(int argc, char *argv[])
         Foam::FatalError.exit();
     }
     #include "foamDlOpenLibs.H"
+
+    // While the input is read, a number that overflows (1e999 in a field
+    // or dictionary) is inf, not a floating-point trap inside OpenFOAM's
+    // parser: the checks of the entries and of the initial state name it
+    sigFpe::ignore readingInput;
+
+    // A run killed while writing leaves its last time folder cut short:
+    // the output fields are written before the state (lm, F, D, pointD).
+    // Before the run's Time selects the latest folder, set aside (rename
+    // to <time>.incomplete) every latest folder that lacks lm and U on
+    // some rank, saying so: the run starts from the latest complete one
+    // and writes the time again when it gets there
+    {
+        Foam::Time probe
+        (
+            Foam::Time::controlDictName,
+            args.rootPath(),
+            args.caseName(),
+            "system",
+            "constant",
+            false,
+            false
+        );
+        auto holdsState = [&](const word& timeName)
+        {
+            return returnReduce
+            (
+                isFile(probe.path()/timeName/"lm")
+             || isFile(probe.path()/timeName/"U"),
+                andOp<bool>()
+            );
+        };
+
+        for (instantList times(probe.times()); times.size(); )
+        {
+            const instant& latest = times.last();
+            if
+            (
+                latest.value() <= 0
+             || latest.name() != probe.timeName()
+             || holdsState(latest.name())
+            )
+            {
+                break;
+            }
+
+            const fileName cut(probe.path()/latest.name());
+            const fileName aside(cut + ".incomplete");
+            rmDir(aside);
+            mv(cut, aside);
+
+            WarningInFunction
+                << "Time folder " << latest.name() << " holds neither lm"
+                << " nor U: it is incomplete (a run stopped while writing"
+                << " it). Moved to " << aside.name() << "; the run starts"
+                << " from the latest complete time folder" << endl;
+
+            times = probe.times();
+            if (times.size())
+            {
+                probe.setTime(times.last(), 0);
+            }
+        }
+    }
+
     #include "createTime.H"
     #include "createMesh.H"
 
@@ -139,6 +205,67 @@ int main(int argc, char *argv[])
         }
     }
 
+    // An entry of controlDict neither OpenFOAM's Time nor touchFoam reads
+    // (maxCo, adjustTimeStep of a fluid solver, a misspelt one): OpenFOAM
+    // ignores it; say so, naming the nearest valid one
+    entryDeclaration::checkEntries
+    (
+        runTime.controlDict(),
+        "system/controlDict",
+        {
+            "application", "startFrom", "startTime", "stopAt", "endTime",
+            "deltaT", "writeControl", "writeInterval", "purgeWrite",
+            "secondaryWriteControl", "secondaryWriteInterval",
+            "secondaryPurgeWrite", "writeFormat", "writeVersion",
+            "writeCompression", "writePrecision", "timeFormat",
+            "timePrecision", "graphFormat", "runTimeModifiable", "libs",
+            "functions", "DebugSwitches", "InfoSwitches",
+            "OptimisationSwitches", "DimensionedConstants", "DimensionSets",
+            "fileHandler"
+        },
+        false
+    );
+
+    // A decomposed case runs on as many ranks as it has processor folders:
+    // OpenFOAM itself accepts stale extra folders (ignored) and, when the
+    // decomposeParDict was changed, a decomposition for more ranks than
+    // run, whose processor patches name ranks that do not exist
+    if (Pstream::parRun())
+    {
+        label nFolders = 0;
+        if (Pstream::master())
+        {
+            const fileNameList dirs
+            (
+                readDir(runTime.globalPath(), fileName::DIRECTORY)
+            );
+            for (const fileName& dir : dirs)
+            {
+                const std::string name(dir);
+                if
+                (
+                    name.size() > 9 && name.compare(0, 9, "processor") == 0
+                 && name.find_first_not_of("0123456789", 9)
+                 == std::string::npos
+                )
+                {
+                    ++nFolders;
+                }
+            }
+        }
+        Pstream::scatter(nFolders);
+
+        if (nFolders != Pstream::nProcs())
+        {
+            FatalErrorInFunction
+                << "The case " << runTime.globalPath() << " has " << nFolders
+                << " processor folders (processor0 ...) but runs on "
+                << Pstream::nProcs() << " ranks: decompose it again for "
+                << Pstream::nProcs() << " (decomposePar -force) or run on "
+                << nFolders << nl << exit(FatalError);
+        }
+    }
+
     // Before the fields are read: a patch type the solid cannot use is
     // named with what to use instead
     touchSolid::checkPatchTypes(mesh);
@@ -152,8 +279,18 @@ int main(int argc, char *argv[])
         FatalErrorInFunction
             << "The initial state at time " << runTime.timeName()
             << " has an inverted cell (det F <= 0) or a non-finite value"
+            << " (in lm, F or an input that overflowed)" << nl
             << exit(FatalError);
     }
+
+    readingInput.restore();
+
+    // The state a restart reads (lm, F, D, pointD, the law's state: the
+    // objects that write themselves with the time) is written with at
+    // least 17 significant digits whatever writePrecision says, so that a
+    // restart continues exactly; the fields written for viewing (U, J,
+    // sigma, ...) keep writePrecision (read again with the controlDict)
+    const unsigned int statePrecision = 17;
 
     runProgress progress(mesh, solid, maxSteps);
 
@@ -169,24 +306,40 @@ int main(int argc, char *argv[])
 
         if (!solid.advance(dt))
         {
-            // The state of the step's start is restored: write it
+            // The state of the step's start is restored: write it, unless
+            // its time folder exists (the start time, or a write time of
+            // this run holding the same state): never overwrite one
             runTime.setTime(runTime.value() - dt, runTime.timeIndex() - 1);
-            solid.writeOutputFields();
-            runTime.writeNow();
+            const bool written = isDir(runTime.timePath());
+            if (!written)
+            {
+                solid.writeOutputFields();
+                IOstream::defaultPrecision
+                (
+                    max(IOstream::defaultPrecision(), statePrecision)
+                );
+                runTime.writeNow();
+            }
 
             FatalErrorInFunction
                 << "Inverted cell (det F <= 0) or non-finite value during"
-                << " the step to time " << runTime.value() + dt
-                << " (the cell is named above)" << nl
-                << "    The last good state is written at time "
+                << " the step " << runTime.value() << " -> "
+                << runTime.value() + dt << " (dt = " << dt << "; the cell,"
+                << " its position, J and the Runge-Kutta stage are named"
+                << " above)" << nl
+                << "    The last good state is "
+                << (written ? "the existing time folder " : "written at time ")
                 << runTime.timeName() << nl
                 << exit(FatalError);
         }
+
+        const unsigned int viewPrecision = IOstream::defaultPrecision();
 
         if (step == maxSteps)
         {
             Info<< "Reached maxSteps " << maxSteps << nl;
             solid.writeOutputFields();
+            IOstream::defaultPrecision(max(viewPrecision, statePrecision));
             runTime.writeAndEnd();
         }
         else if (runTime.writeTime())
@@ -194,7 +347,9 @@ int main(int argc, char *argv[])
             solid.writeOutputFields();
         }
 
+        IOstream::defaultPrecision(max(viewPrecision, statePrecision));
         runTime.write();
+        IOstream::defaultPrecision(viewPrecision);
 
         runTime.printExecutionTime(Info);
 

@@ -8,6 +8,7 @@ License
 #include "historyElastic.H"
 #include "zeroGradientFvPatchFields.H"
 #include "addToRunTimeSelectionTable.H"
+#include "declaredEntry.H"
 
 #include <limits>
 
@@ -20,6 +21,15 @@ namespace mechanicalLaws
     defineTypeNameAndDebug(historyElastic, 0);
     addToRunTimeSelectionTable(mechanicalLaw, historyElastic, dictionary);
 }
+
+    //- Declared, so that mechanicalProperties may hold it while this test
+    //  library is loaded (an undeclared entry is refused)
+    static const declaredEntry<scalar> failAfterEntry
+    (
+        "constant/mechanicalProperties", "failAfter",
+        "test law historyElastic: time after which the stress is NaN", "s",
+        VGREAT
+    );
 }
 
 
@@ -32,7 +42,7 @@ Foam::mechanicalLaws::historyElastic::historyElastic
 )
 :
     neoHookean(mesh, dict),
-    failAfter_(getOrDefault<scalar>("failAfter", VGREAT)),
+    failAfter_(failAfterEntry.read(dict)),
     maxStretch_
     (
         IOobject

@@ -7,6 +7,7 @@ License
 
 #include "touchSolid.H"
 #include "declaredEntry.H"
+#include "modelCoeffs.H"
 #include "emptyFvPatch.H"
 #include "calculatedFvPatchFields.H"
 #include "calculatedPointPatchFields.H"
@@ -173,7 +174,7 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
         )
     ),
     mesh_(mesh),
-    controls_(mesh.solutionDict().subDict("TOUCH")),
+    controls_(readControls(mesh)),
     law_(mechanicalLaw::New(mesh)),
     riemann_(riemannSolver::New(controls_, *law_)),
     angularMomentum_(mesh),
@@ -258,6 +259,8 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
             << exit(FatalIOError);
     }
 
+    checkInput();
+
     if (mesh.time().value() == 0)
     {
         checkInitialVelocity();
@@ -299,10 +302,7 @@ bool Foam::touchSolid::advance(const scalar dt)
             const label celli = invalidCell_;
             if (celli >= 0)
             {
-                Pout<< "touchSolid: cell " << celli << " at "
-                    << mesh_.C()[celli] + D_[celli] << " (reference "
-                    << mesh_.C()[celli] << "): det F = " << det(F_[celli])
-                    << ", |lm| = " << mag(lm_[celli]) << endl;
+                reportInvalidCell(celli, stage, dt);
             }
 
             restoreOldTime();
@@ -313,6 +313,57 @@ bool Foam::touchSolid::advance(const scalar dt)
     law_->commitStep(F_);
 
     return true;
+}
+
+
+void Foam::touchSolid::reportInvalidCell
+(
+    const label celli,
+    const label stage,
+    const scalar dt
+) const
+{
+    // The boundary face nearest to the cell in the reference configuration
+    const point& x0 = mesh_.C()[celli];
+    word nearestPatch("none");
+    scalar nearestDistance = GREAT;
+    for (const fvPatch& patch : mesh_.boundary())
+    {
+        if (patch.coupled() || isA<emptyFvPatch>(patch))
+        {
+            continue;
+        }
+        for (const point& c : patch.Cf())
+        {
+            const scalar d = mag(c - x0);
+            if (d < nearestDistance)
+            {
+                nearestDistance = d;
+                nearestPatch = patch.name();
+            }
+        }
+    }
+
+    const tensor& F = F_[celli];
+    const scalar t = mesh_.time().value();
+
+    Pout<< "touchSolid: invalid cell " << celli << " (first on this rank)"
+        << nl << "    current centre   " << x0 + D_[celli]
+        << nl << "    reference centre " << x0
+        << nl << "    J = det F        " << det(F)
+        << nl << "    F                " << F
+        << nl << "    |lm|             " << mag(lm_[celli])
+        << nl << "    finite           "
+        << (std::isfinite(det(F)) && std::isfinite(mag(lm_[celli]))
+            ? "yes" : "no")
+        << nl << "    step             " << t - dt << " -> " << t
+        << " (dt = " << dt << ')'
+        << nl << "    stage            " << stage << " of " << nStages()
+        << " of " << rungeKutta_.name() << " (stage time "
+        << t - dt + rungeKutta_.stageTime(stage)*dt << ')'
+        << nl << "    nearest boundary " << nearestPatch << " ("
+        << nearestDistance << " m from the reference centre)"
+        << nl << "    law              " << law_->type() << endl;
 }
 
 

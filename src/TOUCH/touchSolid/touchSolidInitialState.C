@@ -18,6 +18,10 @@ Description
 #include "emptyFvPatch.H"
 #include "clampedFvPatchVectorField.H"
 #include "symmetricPlaneFvPatchVectorField.H"
+#include "localIOdictionary.H"
+#include "entryDeclaration.H"
+#include "FlatOutput.H"
+#include "modelCoeffs.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -37,6 +41,113 @@ static IOobject inputIO(const fvMesh& mesh, const word& name)
         IOobject::NO_WRITE,
         false
     );
+}
+
+
+//- Whether a field file exists at io, of any class; one of another class
+//  than volVectorField (a volScalarField U, a pointVectorField) is refused
+//  naming the class (OpenFOAM would take it for absent)
+template<class FieldType>
+static bool fieldExists(const IOobject& io)
+{
+    IOobject header(io);
+    if (!header.typeHeaderOk<FieldType>(false))
+    {
+        return false;
+    }
+
+    if (header.headerClassName() != FieldType::typeName)
+    {
+        FatalErrorInFunction
+            << "Field " << io.objectPath() << " has class "
+            << header.headerClassName() << "; touchSolid reads "
+            << io.name() << " as a " << FieldType::typeName
+            << " (FoamFile class)" << nl
+            << exit(FatalError);
+    }
+
+    return true;
+}
+
+
+//- Every cell of the mesh has a positive, finite volume: the update
+//  divides by it (a zero or inverted cell would give inf or a step that
+//  runs backwards)
+static void checkVolumes(const fvMesh& mesh)
+{
+    const scalarField& V = mesh.V().field();
+    forAll(V, celli)
+    {
+        if (!(V[celli] > 0) || !std::isfinite(V[celli]))
+        {
+            FatalErrorInFunction
+                << "Cell " << celli << " of the mesh (constant/polyMesh) at "
+                << mesh.C()[celli] << " has volume " << V[celli]
+                << ": every cell needs a positive volume (inverted or"
+                << " collapsed cell; see checkMesh)" << nl
+                << exit(FatalError);
+        }
+    }
+}
+
+
+//- Before OpenFOAM reads the field: every patch of the mesh that needs a
+//  condition has an entry in boundaryField, of a solid type.  OpenFOAM
+//  would list its fluid types for a misspelt one, or say 'Cannot find
+//  patchField entry' for a missing one without naming what to write
+static void checkConditionTypes(const fvMesh& mesh, const IOobject& io)
+{
+    const localIOdictionary fieldDict
+    (
+        IOobject
+        (
+            io.name(),
+            io.instance(),
+            io.local(),
+            io.db(),
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        volVectorField::typeName
+    );
+
+    const dictionary& conditions = fieldDict.subDict("boundaryField");
+    const wordList solidTypes(solidFluxFvPatchVectorField::types());
+
+    for (const fvPatch& patch : mesh.boundary())
+    {
+        if (patch.coupled() || isA<emptyFvPatch>(patch))
+        {
+            continue;
+        }
+
+        const entry* eptr = conditions.findEntry(patch.name(), keyType::REGEX);
+        if (!eptr || !eptr->isDict())
+        {
+            FatalIOErrorInFunction(conditions)
+                << "Patch " << patch.name() << " of the mesh has no entry in"
+                << " boundaryField of " << io.objectPath() << nl
+                << "    Give it a solid boundary condition, e.g. "
+                << patch.name() << " { type traction; }" << nl
+                << "    Valid types: " << flatOutput(solidTypes) << nl
+                << exit(FatalIOError);
+        }
+
+        const word type(eptr->dict().get<word>("type"));
+        if (!solidTypes.found(type))
+        {
+            const word near(entryDeclaration::nearest(type, solidTypes));
+            FatalIOErrorInFunction(eptr->dict())
+                << "Entry boundaryField/" << patch.name() << "/type '" << type
+                << "' in " << io.objectPath()
+                << " is not a solid boundary condition"
+                << (near.empty() ? "" : ": did you mean '") << near
+                << (near.empty() ? "" : "'?") << nl
+                << "    Valid types: " << flatOutput(solidTypes) << nl
+                << exit(FatalIOError);
+        }
+    }
 }
 
 
@@ -105,8 +216,25 @@ Foam::tmp<Foam::volVectorField> Foam::touchSolid::initialMomentum
 
     IOobject lmIO(inputIO(mesh, "lm"));
     IOobject UIO(inputIO(mesh, "U"));
-    const bool haveLm = lmIO.typeHeaderOk<volVectorField>(true);
-    const bool haveU = UIO.typeHeaderOk<volVectorField>(true);
+    checkVolumes(mesh);
+    const bool haveLm = fieldExists<volVectorField>(lmIO);
+    const bool haveU = fieldExists<volVectorField>(UIO);
+
+    // F is read when present (touchSolid's constructor): one of another
+    // class would be taken for absent, the identity
+    fieldExists<volTensorField>(inputIO(mesh, "F"));
+
+    if (!haveLm && !haveU && mesh.time().value() > 0)
+    {
+        FatalErrorInFunction
+            << "Time folder " << mesh.time().timePath() << " holds neither"
+            << " lm nor U: it is incomplete (a run stopped while writing"
+            << " it?). touchFoam writes lm, F, D and pointD at every write"
+            << " time." << nl
+            << "    Remove it (rm -r " << mesh.time().timeName() << ") to"
+            << " restart from the previous write time" << nl
+            << exit(FatalError);
+    }
 
     if (!haveLm && !haveU)
     {
@@ -123,6 +251,7 @@ Foam::tmp<Foam::volVectorField> Foam::touchSolid::initialMomentum
 
     if (haveLm)
     {
+        checkConditionTypes(mesh, lmIO);
         tmp<volVectorField> tlm(new volVectorField(lmIO, mesh));
         checkDimensions(tlm(), momentumDims, "linear momentum");
         checkConditions(tlm());
@@ -178,6 +307,7 @@ Foam::tmp<Foam::volVectorField> Foam::touchSolid::initialMomentum
 
     // U only: lm = rho U with U's boundary conditions, the patch values
     // scaled by their cells' density as the internal ones
+    checkConditionTypes(mesh, UIO);
     const volVectorField U(UIO, mesh);
     checkDimensions(U, dimVelocity, "velocity");
     checkConditions(U);
@@ -333,6 +463,52 @@ Foam::touchSolid::readDisplacement<Foam::pointVectorField>
     const word&,
     const word&
 );
+
+
+void Foam::touchSolid::checkInput() const
+{
+    // The sub-dictionary of a model that is not selected is ignored
+    // (kept while switching models back and forth): say so
+    checkUnusedCoeffs
+    (
+        controls_, "system/fvSolution TOUCH", "reconstruction or FUpdate"
+    );
+
+    // A modulus in the wrong unit (MPa for Pa) is legal but gives a wave
+    // speed no material has: elastic solids lie between a soft gel's
+    // (about 10 m/s) and diamond's (about 18000 m/s)
+    for (label m = 0; m < law_->nMaterials(); ++m)
+    {
+        const scalar Up = law_->materialUp(m);
+        if (Up < 10 || Up > 20000)
+        {
+            WarningInFunction
+                << "The longitudinal wave speed Up = " << Up << " m/s of"
+                << " material " << m << " in constant/mechanicalProperties"
+                << " lies outside 10 .. 20000 m/s, the range of solid"
+                << " materials: are E [Pa] and rho [kg/m^3] in SI units"
+                << " (rho " << law_->materialRho(m) << " kg/m^3)?" << endl;
+        }
+    }
+
+    // An initial F whose stress overflows (a component of 1e300) is
+    // finite with J > 0, and would stop the first step with a
+    // floating-point trap: name it while the input is read
+    tensorField P(F_.size());
+    law_->stress(F_.primitiveField(), P);
+    forAll(P, celli)
+    {
+        if (!std::isfinite(magSqr(P[celli])))
+        {
+            FatalErrorInFunction
+                << "The stress of cell " << celli << " at "
+                << mesh_.C()[celli] << " overflows for the initial F = "
+                << F_[celli] << " read from "
+                << F_.time().timeName()/"F" << " (law "
+                << law_->type() << ')' << nl << exit(FatalError);
+        }
+    }
+}
 
 
 // ************************************************************************* //

@@ -87,6 +87,20 @@ bool Foam::touchSolid::readMirrorPlanes(const dictionary& controls)
 }
 
 
+const Foam::dictionary& Foam::touchSolid::readControls(const fvMesh& mesh)
+{
+    const dictionary& controls = mesh.solutionDict().subDict("TOUCH");
+    const string where("system/fvSolution TOUCH");
+
+    entryDeclaration::checkEntries
+    (
+        controls, where, entryDeclaration::subDictionaries(where)
+    );
+
+    return controls;
+}
+
+
 Foam::scalarList Foam::touchSolid::mirrorPatches
 (
     const volVectorField& lm,

@@ -274,6 +274,20 @@ void Foam::rigidWallFvPatchVectorField::checkSide() const
             << " 'normal' " << normal_ << " pointing from the wall into the"
             << " solid?" << endl;
     }
+
+    // A face can come into contact only while its outward normal points
+    // towards the wall (against 'normal'): a patch every face of which
+    // faces away from the wall touches it only if the body turns over
+    const scalar mostFacing = gMax(-(patch().nf() & normal_));
+    if (mostFacing <= 0)
+    {
+        WarningInFunction
+            << "Every face of patch " << patch().name() << " faces away"
+            << " from the rigid wall (its outward normals make"
+            << " n.normal >= 0 with 'normal' " << normal_ << "): the wall"
+            << " cannot be touched unless the body turns over. Is the"
+            << " condition on the patch meant to meet the wall?" << endl;
+    }
 }
 
 

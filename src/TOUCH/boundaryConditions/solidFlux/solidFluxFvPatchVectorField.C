@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "solidFluxFvPatchVectorField.H"
+#include "entryDeclaration.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -108,9 +109,13 @@ Foam::solidFluxFvPatchVectorField::solidFluxFvPatchVectorField
     {
         if (!valid.found(e.keyword()))
         {
+            const word near(entryDeclaration::nearest(e.keyword(), valid));
+
             FatalIOErrorInFunction(dict)
                 << "Unknown keyword '" << e.keyword() << "' in the entry of"
-                << " patch " << p.name() << " in " << dict.name() << nl
+                << " patch " << p.name() << " in " << dict.name()
+                << (near.empty() ? "" : ": did you mean '") << near
+                << (near.empty() ? "" : "'?") << nl
                 << "Valid keywords for type '"
                 << dict.getOrDefault<word>("type", word::null) << "': "
                 << valid << nl

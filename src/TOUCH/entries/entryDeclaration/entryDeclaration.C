@@ -8,7 +8,9 @@ License
 #include "entryDeclaration.H"
 #include "OStringStream.H"
 #include "IOstreams.H"
+#include "FlatOutput.H"
 #include <algorithm>
+#include <cctype>
 
 // * * * * * * * * * * * * * * * entryLimits  * * * * * * * * * * * * * * * //
 
@@ -228,6 +230,189 @@ bool Foam::entryDeclaration::declared(const string& where, const word& name)
     }
 
     return false;
+}
+
+
+Foam::wordList Foam::entryDeclaration::names(const string& where)
+{
+    DynamicList<word> found;
+    for (const entryDeclaration* declaration : table())
+    {
+        if (declaration->where_ == where && !found.found(declaration->name_))
+        {
+            found.append(declaration->name_);
+        }
+    }
+
+    wordList result(std::move(found));
+    Foam::sort(result);
+    return result;
+}
+
+
+Foam::wordList Foam::entryDeclaration::subDictionaries(const string& where)
+{
+    DynamicList<word> found;
+    for (const entryDeclaration* declaration : table())
+    {
+        const string& w = declaration->where_;
+        if
+        (
+            w.size() > where.size() + 1
+         && w.compare(0, where.size(), where) == 0
+         && (w[where.size()] == '/' || w[where.size()] == ' ')
+        )
+        {
+            const word name(w.substr(where.size() + 1));
+            if (!found.found(name))
+            {
+                found.append(name);
+            }
+        }
+    }
+
+    wordList result(std::move(found));
+    Foam::sort(result);
+    return result;
+}
+
+
+Foam::word Foam::entryDeclaration::nearest
+(
+    const word& name,
+    const wordList& candidates
+)
+{
+    // Levenshtein distance with one row, letters compared without case
+    auto distance = [](const word& a, const word& b)
+    {
+        labelList row(b.size() + 1);
+        forAll(row, j)
+        {
+            row[j] = j;
+        }
+        for (label i = 1; i <= label(a.size()); ++i)
+        {
+            label diagonal = row[0];
+            row[0] = i;
+            for (label j = 1; j <= label(b.size()); ++j)
+            {
+                const label above = row[j];
+                const bool same =
+                    std::tolower(a[i - 1]) == std::tolower(b[j - 1]);
+                row[j] =
+                    min(min(row[j] + 1, row[j - 1] + 1), diagonal + !same);
+                diagonal = above;
+            }
+        }
+        return row[b.size()];
+    };
+
+    word best;
+    label bestDistance = labelMax;
+    for (const word& candidate : candidates)
+    {
+        const label d = distance(name, candidate);
+        if (d < bestDistance)
+        {
+            best = candidate;
+            bestDistance = d;
+        }
+    }
+
+    // Near enough to be a misspelling: at most a third of the letters
+    // differ (at least one)
+    if (bestDistance > max(label(1), label(name.size())/3))
+    {
+        return word::null;
+    }
+
+    return best;
+}
+
+
+void Foam::entryDeclaration::checkEntries
+(
+    const dictionary& dict,
+    const string& where,
+    const wordList& also,
+    const bool fatal
+)
+{
+    wordList valid(names(where));
+    for (const word& name : also)
+    {
+        if (!valid.found(name))
+        {
+            valid.append(name);
+        }
+    }
+
+    for (const entry& e : dict)
+    {
+        const word key(e.keyword());
+        if (valid.found(key))
+        {
+            continue;
+        }
+
+        // Where an entry of that name (or a sub-dictionary) is read
+        DynamicList<string> elsewhere;
+        for (const entryDeclaration* d : table())
+        {
+            const string& w = d->where_;
+            const bool isSubDict =
+                w.size() > key.size()
+             && w.compare(w.size() - key.size(), key.size(), key) == 0
+             && (w[w.size() - key.size() - 1] == ' '
+              || w[w.size() - key.size() - 1] == '/');
+
+            if ((d->name_ == key && w != where) || isSubDict)
+            {
+                const string place
+                (
+                    isSubDict ? string(w) : string(w + " (" + key + ')')
+                );
+                if (!elsewhere.found(place))
+                {
+                    elsewhere.append(place);
+                }
+            }
+        }
+
+        OStringStream os;
+        os  << "Unknown entry '" << key << "' in " << dict.name().c_str();
+        const word near(nearest(key, valid));
+        if (!near.empty())
+        {
+            os  << ": did you mean '" << near << "'?";
+        }
+        os  << nl;
+        if (elsewhere.size())
+        {
+            os  << "    '" << key << "' is read in another place or by"
+                << " another model only:";
+            for (const string& place : elsewhere)
+            {
+                os  << ' ' << place.c_str() << ';';
+            }
+            os  << nl;
+        }
+        os  << "    Valid entries here (" << where.c_str() << "): "
+            << flatOutput(valid);
+
+        if (fatal)
+        {
+            FatalIOErrorInFunction(dict)
+                << os.str().c_str() << nl << exit(FatalIOError);
+        }
+        else
+        {
+            IOWarningInFunction(dict)
+                << os.str().c_str() << nl
+                << "    The entry is ignored" << endl;
+        }
+    }
 }
 
 

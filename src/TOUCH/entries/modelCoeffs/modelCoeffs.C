@@ -8,6 +8,21 @@ License
 #include "modelCoeffs.H"
 #include "OStringStream.H"
 #include "FlatOutput.H"
+#include "HashSet.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- The names of the sub-dictionaries modelCoeffs has read
+static wordHashSet& coeffsRead()
+{
+    static wordHashSet names;
+    return names;
+}
+
+} // End namespace Foam
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
@@ -44,8 +59,21 @@ Foam::dictionary Foam::modelCoeffs
 
     const entry* eptr = dict.findEntry(coeffsName, keyType::LITERAL);
 
+    coeffsRead().insert(coeffsName);
+
     if (eptr && eptr->isDict())
     {
+        // Every entry is one of the model's: a misspelt optional one would
+        // otherwise be ignored
+        wordList names;
+        string where;
+        for (const entryDeclaration* e : entries)
+        {
+            names.append(e->name());
+            where = e->where();
+        }
+        entryDeclaration::checkEntries(eptr->dict(), where, names);
+
         return eptr->dict();
     }
 
@@ -88,6 +116,36 @@ Foam::dictionary Foam::modelCoeffs
     // Optional entries only: the defaults, in a dictionary named as the
     // sub-dictionary would be (errors name it)
     return dictionary(dict, dictionary(fileName(coeffsName)));
+}
+
+
+void Foam::checkUnusedCoeffs
+(
+    const dictionary& dict,
+    const string& where,
+    const string& selectedBy
+)
+{
+    const string prefix(where + '/');
+    for (const entryDeclaration* d : entryDeclaration::sorted())
+    {
+        if (d->where().compare(0, prefix.size(), prefix) != 0)
+        {
+            continue;
+        }
+        const word coeffsName(d->where().substr(prefix.size()));
+        if (dict.isDict(coeffsName) && !coeffsRead().found(coeffsName))
+        {
+            coeffsRead().insert(coeffsName);
+            // A note, not a warning: the tutorials keep the entries of
+            // the models they can switch to
+            Info<< "Note: sub-dictionary " << coeffsName << " in "
+                << dict.name().c_str() << " is not read: its model ("
+                << word(coeffsName.substr(0, coeffsName.size() - 6))
+                << ") is not selected by " << selectedBy.c_str()
+                << "; its entries are not checked" << endl;
+        }
+    }
 }
 
 

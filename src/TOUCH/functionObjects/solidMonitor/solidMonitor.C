@@ -115,6 +115,22 @@ bool Foam::functionObjects::solidMonitor::read(const dictionary& dict)
     fvMeshFunctionObject::read(dict);
     writeFile::read(dict);
 
+    // Every entry is solidMonitor's or one OpenFOAM reads for any function
+    // object: a misspelt one would otherwise be ignored
+    entryDeclaration::checkEntries
+    (
+        dict,
+        originEntry.where(),
+        {
+            "type", "libs", "functionObjectLibs", "enabled", "log",
+            "region", "writeControl", "writeInterval", "executeControl",
+            "executeInterval", "outputControl", "outputInterval",
+            "evaluateControl", "evaluateInterval", "timeStart", "timeEnd",
+            "deltaTCoeff", "nStepsToStartTimeChange", "writePrecision",
+            "writeToFile", "useUserTime", "updateHeader"
+        }
+    );
+
     origin_ = originEntry.read(dict);
 
     return true;

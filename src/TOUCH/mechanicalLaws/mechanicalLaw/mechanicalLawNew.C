@@ -7,6 +7,7 @@ License
 
 #include "mechanicalLaw.H"
 #include "declaredEntry.H"
+#include "modelCoeffs.H"
 #include "fvMesh.H"
 #include "zoned.H"
 
@@ -108,6 +109,17 @@ Foam::autoPtr<Foam::mechanicalLaw> Foam::mechanicalLaw::New
             *dictionaryConstructorTablePtr_
         ) << exit(FatalIOError);
     }
+
+    // Every entry is one of the laws' or the selected model's own
+    // sub-dictionary: an entry another model reads (yieldStress under
+    // neoHookean) would otherwise be silently ignored
+    const string where("constant/mechanicalProperties");
+    wordList also;
+    if (entryDeclaration::subDictionaries(where).found(modelCoeffsName(modelType)))
+    {
+        also.append(modelCoeffsName(modelType));
+    }
+    entryDeclaration::checkEntries(dict, where, also);
 
     return autoPtr<mechanicalLaw>(cstrIter()(mesh, dict));
 }
