@@ -6,7 +6,38 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "angularMomentum.H"
+#include "symmetricEigen.H"
 #include "volFields.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::symmTensor Foam::angularMomentum::inverseOnRange(const symmTensor& J)
+{
+    // A body whose cell centres lie on one line (a bar of N x 1 x 1 cells)
+    // has no moment of inertia about that line: J is singular, and so is
+    // the angular momentum about the line, which the lever arms x - xbar
+    // cannot change. The inverse on J's range leaves that axis alone
+    const scalar size = tr(J);
+    if (det(J) > 1e-12*pow3(size))
+    {
+        return inv(J);
+    }
+
+    vector values;
+    tensor vectors;
+    symmetricEigen(J, values, vectors);
+
+    symmTensor Jinv(Zero);
+    for (direction i = 0; i < vector::nComponents; ++i)
+    {
+        if (values[i] > 1e-9*size)
+        {
+            Jinv += symm(sqr(vectors.row(i)))/values[i];
+        }
+    }
+    return Jinv;
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -120,7 +151,7 @@ Foam::angularMomentum::rigidMoments Foam::angularMomentum::moments
     const symmTensor J(tr(dd)*symmTensor::I - dd);
     if (axes_ == symmTensor::I)
     {
-        m.Jinv = inv(J);
+        m.Jinv = inverseOnRange(J);
     }
     else
     {

@@ -120,6 +120,13 @@ void Foam::touchSolid::computeRates(const label stage)
     );
 
     update_->rates(stage, lmRate_, FRate_, pointV_.primitiveFieldRef(), torque_);
+    if (gravity_)
+    {
+        gravity_->addRates
+        (
+            cellPositions(D_.primitiveField()), lmRate_, torque_
+        );
+    }
 
     reduce(torque_, sumOp<vector>());
 
@@ -177,6 +184,7 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     controls_(readControls(mesh)),
     law_(mechanicalLaw::New(mesh)),
     riemann_(riemannSolver::New(controls_, *law_)),
+    gravity_(gravity::New(mesh, cellDensity(mesh, *law_))),
     angularMomentum_(mesh),
     preserveAngularMomentum_
     (
@@ -379,7 +387,7 @@ void Foam::touchSolid::storeOldTime()
     {
         L0_ = angularMomentum_.total(cellPositions(D0_), lm0_);
         Lstage_ = L0_;
-        E0_ = kineticEnergy() + strainEnergy();
+        E0_ = kineticEnergy() + strainEnergy() + potentialEnergy();
         Estage_ = E0_;
     }
 }
@@ -458,7 +466,7 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
                 beta*dt,
                 Lstage_,
                 law_->rho(),
-                Estage_ - strainEnergy(),
+                Estage_ - strainEnergy() - potentialEnergy(),
                 lmRate_
             );
         }

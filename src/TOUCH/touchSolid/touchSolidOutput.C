@@ -116,6 +116,15 @@ Foam::scalar Foam::touchSolid::strainEnergy() const
 }
 
 
+Foam::scalar Foam::touchSolid::potentialEnergy() const
+{
+    return
+        gravity_
+      ? gravity_->potentialEnergy(cellPositions(D_.primitiveField()))
+      : 0;
+}
+
+
 void Foam::touchSolid::writeSummary(Ostream& os) const
 {
     os  << "    mechanical law  ";
@@ -143,6 +152,10 @@ void Foam::touchSolid::writeSummary(Ostream& os) const
         << (nodalAveraging_ ? nodalAveraging_->type() : word("off"))
         << ", symmetric planes " << (mirrorPlanes_ ? "mirror" : "oneSided")
         << nl;
+    if (gravity_)
+    {
+        gravity_->writeSummary(os);
+    }
 }
 
 

@@ -69,12 +69,16 @@ void Foam::functionObjects::solidMonitor::writeFileHeader(Ostream& os)
     for
     (
         const char* title
-      : {"px", "py", "pz", "Lx", "Ly", "Lz",
-         "kineticEnergy", "strainEnergy", "totalEnergy"}
+      : {"px", "py", "pz", "Lx", "Ly", "Lz", "kineticEnergy", "strainEnergy"}
     )
     {
         writeTabbed(os, title);
     }
+    if (gravity_)
+    {
+        writeTabbed(os, "potentialEnergy");
+    }
+    writeTabbed(os, "totalEnergy");
     for (const label patchi : wallPatches_)
     {
         const word& name = mesh_.boundary()[patchi].name();
@@ -97,7 +101,11 @@ Foam::functionObjects::solidMonitor::solidMonitor
     fvMeshFunctionObject(name, runTime, dict),
     writeFile(mesh_, name, typeName, dict),
     origin_(Zero),
-    wallPatches_(findWallPatches())
+    wallPatches_(findWallPatches()),
+    gravity_
+    (
+        mesh_.lookupObject<touchSolid>(touchSolid::typeName).hasGravity()
+    )
 {
     read(dict);
 
@@ -148,6 +156,7 @@ bool Foam::functionObjects::solidMonitor::execute()
     const vector L(solid.totalAngularMomentum(origin_));
     const scalar kinetic = solid.kineticEnergy();
     const scalar stored = solid.strainEnergy();
+    const scalar potential = solid.potentialEnergy();
 
     // Every rank takes part in the sums of the walls
     labelList contactFaces(wallPatches_.size());
@@ -174,7 +183,12 @@ bool Foam::functionObjects::solidMonitor::execute()
         os  << setw(charWidth()) << mesh_.time().value();
         os  << tab << p.x() << tab << p.y() << tab << p.z()
             << tab << L.x() << tab << L.y() << tab << L.z()
-            << tab << kinetic << tab << stored << tab << kinetic + stored;
+            << tab << kinetic << tab << stored;
+        if (gravity_)
+        {
+            os  << tab << potential;
+        }
+        os  << tab << kinetic + stored + potential;
         forAll(wallPatches_, i)
         {
             os  << tab << contactFaces[i] << tab << wallForce[i];
