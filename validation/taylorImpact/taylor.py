@@ -89,7 +89,12 @@ CCX_FREQ = "667"        # output every ~4 us, as the peer's baselines
 
 def peer_dir():
     """The folder of the CalculiX peer's scripts, $CALCULIX_PEER."""
-    return os.path.abspath(os.environ.get("CALCULIX_PEER", ""))
+    path = os.environ.get("CALCULIX_PEER", "")
+    if not path:
+        raise run.RunError("set CALCULIX_PEER to the folder of the CalculiX"
+                           " peer's scripts (run_B.sh), or run with"
+                           " --no-calculix")
+    return os.path.abspath(path)
 
 
 def case_dir(n):
