@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Bar rebound (BENCHMARKS.md section 4): contact, separation, energy and the
+"""Bar rebound (doc/benchmarks.md 4): contact, separation, energy and the
 end displacements on two meshes (issue 10, acceptance 2).
 
     ./rebound.py [--n 6 12] [--write 5e-6] [--no-run]

@@ -1,8 +1,8 @@
 """CalculiX side of the comparison: decks, timed runs, output readers.
 
-The decks come from the peer's generators in ../shared/peers/calculix
-(beside the repository, as in the CI), called as programs; everything
-read back from CalculiX's files is read here:
+The decks come from the CalculiX peer's deck generators, a folder outside
+this project named by $CALCULIX_PEER, called as programs; everything read
+back from CalculiX's files is read here:
 
     peer_dir         the generators' folder, checked
     column_deck      gen_column.py: n x 6n x n twisting column to t_end
@@ -37,14 +37,16 @@ CUBE_PEER = {"E": 1.7e7, "nu": 0.3, "rho": 1100.0, "U0": 5e-4}
 
 
 def peer_dir():
-    """../shared/peers/calculix beside the repository root."""
-    path = os.path.normpath(os.path.join(run.project_dir(), "..", "shared",
-                                         "peers", "calculix"))
+    """The folder of the peer's deck generators, $CALCULIX_PEER."""
+    path = os.environ.get("CALCULIX_PEER", "")
+    if not path:
+        raise run.RunError("set CALCULIX_PEER to the folder of the CalculiX"
+                           " deck generators (gen_column.py, gen_cube.py)")
+    path = os.path.abspath(path)
     for name in ("gen_column.py", "gen_cube.py"):
         if not os.path.isfile(os.path.join(path, name)):
             raise run.RunError("CalculiX deck generator %s not found in %s "
-                               "(the peer folder beside the repository)"
-                               % (name, path))
+                               "($CALCULIX_PEER)" % (name, path))
     return path
 
 

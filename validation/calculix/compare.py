@@ -10,7 +10,7 @@
                  [--repeat R]
 
 Runs, one at a time and on one thread each (OMP_NUM_THREADS=1 for ccx),
-CalculiX (decks from the peer's generators in ../shared/peers/calculix,
+CalculiX (decks from the peer's generators in $CALCULIX_PEER,
 explicit, its own increment) and touchFoam on the same structured hex
 meshes, in runs/<case>/n<n>/<code>/, and reports for each run the wall time
 of the solver process (and its CPU time), the steps or increments, and the

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Ring impact (BENCHMARKS.md section 5): linear and angular momentum on two
+"""Ring impact (doc/benchmarks.md 5): linear and angular momentum on two
 meshes (issue 10, acceptance 3).
 
     ./ring.py [--n 96 384] [--no-run]

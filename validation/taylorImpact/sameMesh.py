@@ -89,7 +89,7 @@ def markdown(rows):
                    in_range("length_mm", c["length_mm"]),
                    in_range("footRadius_mm", c["footRadius_mm"]),
                    in_range("peakPlasticStrain", c["peakPlasticStrain"])))
-    lines += ["", "Literature (BENCHMARKS.md 3): length %s mm, foot radius "
+    lines += ["", "Literature (doc/benchmarks.md 3): length %s mm, foot radius "
               "%s mm, peak strain %s." % tuple(
                   "%g-%g" % LITERATURE[k]
                   for k in ("length_mm", "footRadius_mm",

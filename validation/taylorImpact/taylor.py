@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Taylor impact (BENCHMARKS.md section 3): mesh convergence against the
+"""Taylor impact (doc/benchmarks.md section 3): mesh convergence against the
 literature and against CalculiX.
 
     ./taylor.py [--n 3 6 9] [--calculix 4,4,34 6,6,50] [--no-calculix]
@@ -44,12 +44,11 @@ normal random values (C_noise, about 0.54: rough, but not alternating).
 A grid-scale mode keeps its C under refinement; a resolved field's C
 falls with h.
 
-CalculiX: ../shared/peers/calculix/run_B.sh (C3D8R, DTMAX = 6e-9 s as its
+CalculiX: run_B.sh of the peer's folder $CALCULIX_PEER (C3D8R, DTMAX = 6e-9 s as its
 README says, one thread) for each N,M,NY of --calculix, in
 runs/calculix/; final length (max current y of the nodes), radius of the
 impact face and peak PEEQ (integration points) from its post_taylor.py,
-wall time of ccx from its JOB.time.  The peer folder can be moved with
-$CALCULIX_PEER.
+wall time of ccx from its JOB.time.
 
 Writes results.json, results.md and taylor.png (when matplotlib is
 available).  --no-run re-analyses runs/ (wall times are stored there).
@@ -82,15 +81,20 @@ from taylorLiterature import (CHECKER_FIELDS, CHECKER_FREE,  # noqa: E402,F401
 from taylorReport import plot, write_markdown  # noqa: E402
 
 T_END = 8e-5
-V0 = 227.0              # impact speed [m/s] (BENCHMARKS.md 3)
+V0 = 227.0              # impact speed [m/s] (doc/benchmarks.md 3)
 TUTORIAL = "taylorImpact"
 CCX_DTMAX = "6e-9"      # peer README B: CalculiX's own increment diverges
 CCX_FREQ = "667"        # output every ~4 us, as the peer's baselines
 
 
 def peer_dir():
-    return os.environ.get("CALCULIX_PEER", os.path.join(
-        run.project_dir(), "..", "shared", "peers", "calculix"))
+    """The folder of the CalculiX peer's scripts, $CALCULIX_PEER."""
+    path = os.environ.get("CALCULIX_PEER", "")
+    if not path:
+        raise run.RunError("set CALCULIX_PEER to the folder of the CalculiX"
+                           " peer's scripts (run_B.sh), or run with"
+                           " --no-calculix")
+    return os.path.abspath(path)
 
 
 def case_dir(n):

@@ -1,9 +1,9 @@
 """Reference ranges and thresholds of the Taylor impact study (taylor.py).
 
-BENCHMARKS.md section 3 and issue 10, acceptance 1.
+doc/benchmarks.md section 3 and issue 10, acceptance 1.
 """
 
-# BENCHMARKS.md 3: Camacho & Ortiz 1997 compilation (Kamoulakos 1990,
+# doc/benchmarks.md 3: Camacho & Ortiz 1997 compilation (Kamoulakos 1990,
 # Zhu & Cescotto 1995), at 80 us
 LITERATURE = {
     "length_mm": (21.26, 21.49),

@@ -52,7 +52,7 @@ def write_markdown(out, path):
             "| - | - | - | - | - |" % (
                 c["mesh"], c["elements"], c["increments"], c["ccxWallTime_s"],
                 c["length_mm"], c["footRadius_mm"], c["peakPlasticStrain"]))
-    lines.append("| literature (BENCHMARKS.md 3) | | | | %s | | | | | |"
+    lines.append("| literature (doc/benchmarks.md 3) | | | | %s | | | | | |"
                  % rng)
 
     yn = {True: "yes", False: "NO", None: "-"}

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Twisting column (BENCHMARKS.md section 2): energy and locking.
+"""Twisting column (doc/benchmarks.md section 2): energy and locking.
 
     ./twist.py [--n 8] [--nu 0.45 0.495] [--end 0.3] [--no-run]
 

@@ -27,7 +27,7 @@ def flatten_tensor(T):
 
 
 class SwingingCube:
-    """Low-dispersion cube, BENCHMARKS.md section 1.
+    """Low-dispersion cube, doc/benchmarks.md section 1.
 
         u(X, t) = U0 cos(w t) g(X),   g_i = sin(a X_i) prod_{k != i} cos(a X_k)
 
@@ -103,7 +103,7 @@ class SwingingCube:
 
 
 class TwistingColumn:
-    """Twisting column, BENCHMARKS.md section 2: v0 = omega x X with
+    """Twisting column, doc/benchmarks.md section 2: v0 = omega x X with
     omega = (0, Omega sin(pi Y / (2 L)), 0)."""
 
     def __init__(self, Omega=105.0, L=6.0, rho=1100.0):
