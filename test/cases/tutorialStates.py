@@ -104,7 +104,8 @@ def add_max_steps(case, steps):
 
 
 def render(case):
-    """The driver in pvbatch (one retry: Xvfb is at times not ready)."""
+    """The driver in pvbatch (two retries: Xvfb is at times not ready,
+    and pvbatch then aborts without output)."""
     with open(os.path.join(case, "stateDriver.py"), "w") as f:
         f.write(DRIVER)
     env = dict(os.environ)
@@ -112,7 +113,7 @@ def render(case):
         [os.path.join(run.project_dir(), "bin", "python")]
         + [p for p in env.get("PYTHONPATH", "").split(os.pathsep) if p])
     out = ""
-    for _ in range(2):
+    for _ in range(3):
         out = subprocess.run(["xvfb-run", "-a", "pvbatch", "stateDriver.py"],
                              cwd=case, env=env, stdout=subprocess.PIPE,
                              stderr=subprocess.STDOUT,
