@@ -4,7 +4,7 @@
 the seed's plane problem, energy, and the faces in contact with the wall
 and its force per metre.  Run in the case by Allrun; writes
 histories.png and prints the largest |p_x|, |p_z| and |L| relative to the
-bounds of doc/benchmarks.md 5 (1e-8 |p_y(0)| and 1e-8 |p_y(0)| R_outer).
+bounds of doc/benchmarks.md, ring impact (1e-8 |p_y(0)| and 1e-8 |p_y(0)| R_outer).
 """
 
 import os

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Histories of the Taylor bar: length and foot radius (at the written
-times, with the literature ranges of doc/benchmarks.md 3 at 80 us), energy,
+times, with the literature ranges of doc/benchmarks.md, Taylor impact at 80 us), energy,
 momentum, and the faces in contact with the wall and its force (per step,
 from the solidMonitor).  Run in the case by Allrun; writes histories.png.
 """
