@@ -44,15 +44,14 @@ Per case:
              wall force match to 1e-12 of the largest value of each group,
              and the reconstructed 'contact' entry equals the serial one.
 
-Known failure (test/knownFailures): barRebound on 'scotch3' (wall faces
-2+3+3) leaves the serial run in the step after the first contact (step
-61: p_y by 5e-7, the wall force by 1.6e-5, lm_x of a cell by 7.6 %), and
-ends at another time.  Before contact lm_x and lm_z are zero but for
-round-off (1e-10 against |lm| 1.3e6), and the limiter's tolerance, 1e-10
-gMax of each component's own magnitude, is then round-off squared, so the
-lateral limiter factors follow the decomposition's round-off.  A private
-build with the tolerance from the magnitude of the field, 1e-10 gMax|lm|
-for every component, passes all 16 decompositions.
+barRebound on 'scotch3' (wall faces 2+3+3) used to leave the serial run
+in the step after the first contact (step 61: p_y by 5e-7, the wall force
+by 1.6e-5): the limiter's round-off tolerance, taken from each component's
+own magnitude, was round-off squared for lm_x and lm_z (zero before
+contact but for round-off), so the lateral limiter factors followed the
+decomposition's round-off.  Since commit 3c2465e the tolerance is 1e-10
+gMax|lm| for every component and every decomposition here matches the
+serial run (the case is no longer in test/knownFailures).
 Work folders: test/runs/impactRestartParallel/.
 """
 

@@ -35,6 +35,13 @@ Asserted (bounce on both meshes unless said):
                   5 %; the contact lasts 2 L/c_p within 5 %
   after           no face in contact after the separation, p_x > 0 (the
                   bar moves away), reported as a fraction of M v0
+  closed form     the 1D bar leaves at +v0 with its whole energy E0: the
+                  rebound velocity (p_x / M) and the energy at the end
+                  approach 1 from N to 2N, and on N 50 fall short of it by
+                  at most 0.06 and 0.093 (measured 0.040 and 0.062; the
+                  contact duration is asserted within 2 %, measured -0.63 %
+                  and -0.29 %).  Fails with the firstOrder reconstruction
+                  (--perturb-reconstruction firstOrder: 0.858 v0, 0.784 E0)
   energy          the total energy never increases (1e-12 E0 per step)
   momentum        p_x changes only in steps with a face in contact at some
                   stage (1e-12 |p0|), p_y = p_z = 0; the impulse of the
@@ -70,8 +77,15 @@ V0 = impact.V0
 COLUMN_N = "contactFaces(wall)"
 COLUMN_F = "wallForce(wall)"
 #: relative tolerances
-LIMITS = {"separation": 0.05, "meshes": 0.05, "energy": 1e-12,
+LIMITS = {"separation": 0.02, "meshes": 0.05, "energy": 1e-12,
           "momentum": 1e-12, "impulse": 1e-10, "frame": 1e-10}
+
+#: 1 - value on N 50 at most (measured 2026-12-04: rebound velocity 0.960
+#: v0, energy 0.9384 E0; N 100: 0.974, 0.9606)
+REBOUND_DEFICIT = {"pAfter": 0.06, "energyEnd": 0.093}
+#: --perturb-reconstruction: every run with another reconstruction (to show
+#: that the closed-form checks can fail)
+PERTURB_RECONSTRUCTION = None
 
 
 def wall_entry(gap, velocity=0.0):
@@ -83,7 +97,9 @@ def bar(root, label, n, wall, end_time, at_rest=False, update=None,
         control=None):
     """A meshed, initialised copy of elasticImpact with the given wall
     entry (None: the tutorial's clamped one)."""
-    touch = {"FUpdate": update} if update else None
+    touch = {"FUpdate": update} if update else {}
+    if PERTURB_RECONSTRUCTION:
+        touch["reconstruction"] = PERTURB_RECONSTRUCTION
     ctrl = {"endTime": end_time, "writeInterval": end_time}
     ctrl.update(control or {})
     case = cases.prepare("elasticImpact", os.path.join(root, label), n=n,
@@ -342,6 +358,21 @@ def body(args):
                         % (args.n, 2 * args.n, 100 * meshes))
     lines.append("meshes agree to %.2f %%" % (100 * meshes))
 
+    # Against the 1D closed form: the bar leaves at +v0 with all of E0;
+    # the scheme's loss must fall with the mesh and, on the default N 50,
+    # stay within REBOUND_DEFICIT (1.5 times the 2026-12-04 values)
+    coarse, fine = bounces[args.n], bounces[2 * args.n]
+    for key, label in (("pAfter", "rebound velocity / v0"),
+                       ("energyEnd", "energy recovered / E0")):
+        lines.append("%s %.4f (N %d), %.4f (N %d), closed form 1"
+                     % (label, coarse[key], args.n, fine[key], 2 * args.n))
+        if not coarse[key] < fine[key] <= 1 + 1e-12:
+            failures.append("%s does not approach 1 with the mesh (%.4f, "
+                            "%.4f)" % (label, coarse[key], fine[key]))
+        if args.n == 50 and not 1 - coarse[key] <= REBOUND_DEFICIT[key]:
+            failures.append("%s %.4f on N 50: short of 1 by more than %g"
+                            % (label, coarse[key], REBOUND_DEFICIT[key]))
+
     # The other F updates: reported
     for update in ("constrained", "plain"):
         case = bar(root, "%s_N%d" % (update, args.n), args.n,
@@ -373,5 +404,8 @@ if __name__ == "__main__":
     parser.add_argument("--gap", type=float, default=2.5e-5,
                         help="initial gap [m] (default 2.5e-5: contact at "
                              "0.25 ms)")
+    parser.add_argument("--perturb-reconstruction", default=None,
+                        help="run every bar with this reconstruction")
     args = parser.parse_args()
+    PERTURB_RECONSTRUCTION = args.perturb_reconstruction
     sys.exit(testing.run_test(NAME, lambda: body(args)))

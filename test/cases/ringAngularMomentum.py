@@ -14,17 +14,12 @@ component of the monitor's angular momentum (about the origin, the ring's
 initial centre) must stay below 1e-8 |p_y(0)| R_outer (R_outer = 0.04) at
 every step.
 
-Known failure: L_z reaches 1.1e-8 (-n 48) and 2.3e-7 (-n 96) |p_y(0)|
-R_outer.  It is amplified round-off, not a discretisation error: at -n 48
-it is 1.1e-8, 3.9e-8 or 1.8e-7 with writes every 5 ms, every 60 ms or never
-(other step sequences; -n 96 to 0.18 s without writes: 4.9e-8), while L_x
-and L_y stay at 2e-17.  The limiter of the reconstruction
-(linearReconstructionTemplates.C) ignores increments below 1e-10
-gMax(cmptMag(p)) per component; p_x of the falling ring is zero but for
-round-off, so its tolerance is round-off squared and the x limiter factors
-act on noise.  With the tolerance taken from the field's magnitude,
-1e-10 gMax(mag(p)) for every component (a private build, not committed),
-L_z stays below 5.0e-15 (-n 48) and 1.1e-13 (-n 96).
+L_z reached 1.1e-8 (-n 48) and 2.3e-7 (-n 96) |p_y(0)| R_outer before
+commit 3c2465e: amplified round-off, the limiter's tolerance taken from
+each component's own magnitude (1e-10 gMax(cmptMag(p))) while p_x of the
+falling ring is zero but for round-off.  With the tolerance from the
+field's magnitude, 1e-10 gMax(mag(p)) for every component (commit
+3c2465e), L_z stays near 1e-13 and the test is no longer a known failure.
 Work folders: test/runs/ringAngularMomentum/.
 """
 

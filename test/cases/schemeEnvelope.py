@@ -20,7 +20,7 @@ linear RK3), from the solidMonitor (every step):
     and the twist at t = 0.1 s within 10 % of nu 0.45's;
   - the polyhedral dual (polyDualMesh) of 4 x 24 x 4 to t = 0.1 s: energy
     never grows, twist within 10 % of the hexahedral one.
-Tetrahedra are test/cases/tetrahedralTwist.py (a known failure).
+Tetrahedra are test/cases/tetrahedralTwist.py.
 Work folders: test/runs/schemeEnvelope/.
 """
 

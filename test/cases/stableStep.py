@@ -20,6 +20,12 @@ form min_f min(J, 1)/(J |F^-T N_f|), N_f = e_x, e_y, e_z:
   rotation          F = R(30 deg about z)       1 (no step lost to a turn)
   rotated shear     R times the simple shear    0.894427 (frame invariant)
 
+and the first step of F = I itself against dt = CFL h/Up, with
+Up = sqrt((lambda + 2 mu)/rho) computed here from E, nu and rho of the
+case's mechanicalProperties, h = 1/4 and CFL read from fvSolution (E 1.7e7,
+nu 0.3, rho 1100, CFL 0.8: 1.38661064313e-3 s; the log's 15 digits agree
+to 1e-12; a CFL of 0.79 in this formula fails).
+
 Work folders: test/runs/stableStep/.
 """
 
@@ -93,6 +99,17 @@ def first_step(root, label, F):
     return float(found[0])
 
 
+def closed_form_step(case, h):
+    """CFL h/Up from the material entries, not from the solver."""
+    mat = cases.material(case)
+    E, nu, rho = mat["E"], mat["nu"], mat["rho"]
+    mu = E / (2 * (1 + nu))
+    lam = E * nu / ((1 + nu) * (1 - 2 * nu))
+    text = open(os.path.join(case, "system", "fvSolution")).read()
+    cfl = float(re.search(r"^\s*CFL\s+([^;\s]+)\s*;", text, re.M).group(1))
+    return cfl * h / math.sqrt((lam + 2 * mu) / rho)
+
+
 def body():
     root = testing.work_dir(NAME)
     reference = None
@@ -102,6 +119,12 @@ def body():
         dt = first_step(root, label, F)
         if reference is None:
             reference = dt
+            expected = closed_form_step(os.path.join(root, label), 0.25)
+            lines.append("F = I: dt %.12e s (CFL h/Up %.12e)"
+                         % (dt, expected))
+            if abs(dt - expected) > TOLERANCE * expected:
+                failures.append("F = I: dt %.15g s against CFL h/Up %.15g"
+                                % (dt, expected))
             continue
         factor = dt / reference
         expected = expected_factor(F)

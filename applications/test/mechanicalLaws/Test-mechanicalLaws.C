@@ -12,7 +12,17 @@ Description
     differences), frame invariance P(QF) = Q P(F) (exact for neoHookean, to
     second order in the rotation angle for linearElastic, which is a
     small-strain law), neoHookean -> linearElastic for small strain, the
-    cofactor convention cof F = J F^-T, and clear errors for bad input.
+    cofactor convention cof F = J F^-T, closed-form stresses (E 1e6,
+    nu 0.3: mu = E/(2(1 + nu)), lambda = E nu/((1 + nu)(1 - 2 nu)),
+    kappa = lambda + 2 mu/3):
+      uniaxial strain F = I + e X X, linearElastic: P_xx = (lambda + 2 mu) e,
+          P_yy = P_zz = lambda e, the rest 0;
+      simple shear F = I + g X Y (J = 1), neoHookean: P_xy = mu g,
+          P_yx = mu g (1 + g^2/3), P_xx = P_yy = P_zz = -mu g^2/3, the rest 0;
+      uniaxial stretch F = diag(a, 1, 1) (J = a), neoHookean:
+          P_xx = mu a^(-2/3) (a - (a^2 + 2)/(3 a)) + kappa (a - 1),
+          P_yy = P_zz = mu a^(-2/3) (1 - (a^2 + 2)/3) + kappa (a - 1) a;
+    and clear errors for bad input.
     Exits non-zero on any wrong answer.
 
 Usage
@@ -96,6 +106,70 @@ int main(int argc, char *argv[])
         (
             "cof(F) = det(F) inv(F)^T",
             mag(cof(F) - det(F)*inv(F).T()),
+            1e-14
+        );
+    }
+
+    // Closed-form stresses, written out component by component
+    {
+        const scalar nu = 0.3;
+        const scalar mu = E/(2*(1 + nu));
+        const scalar lambda = E*nu/((1 + nu)*(1 - 2*nu));
+        const scalar kappa = lambda + 2*mu/3;
+
+        autoPtr<mechanicalLaw> linear
+        (
+            mechanicalLaw::New(mesh, material("linearElastic"))
+        );
+        autoPtr<mechanicalLaw> neo
+        (
+            mechanicalLaw::New(mesh, material("neoHookean"))
+        );
+
+        const scalar e = 0.015625;  // 2^-6: 1 + e - 1 = e exactly
+        tensor F(tensor::I);
+        F.xx() += e;
+        tensor P(Zero);
+        P.xx() = (lambda + 2*mu)*e;
+        P.yy() = lambda*e;
+        P.zz() = lambda*e;
+        report.check
+        (
+            "linearElastic: uniaxial strain P_xx = (lambda + 2 mu) e, "
+            "P_yy = P_zz = lambda e",
+            mag(linear->P(F) - P)/mag(P),
+            1e-14
+        );
+
+        const scalar g = 0.4;
+        F = tensor::I;
+        F.xy() = g;
+        P = Zero;
+        P.xy() = mu*g;
+        P.yx() = mu*g*(1 + sqr(g)/3);
+        P.xx() = -mu*sqr(g)/3;
+        P.yy() = -mu*sqr(g)/3;
+        P.zz() = -mu*sqr(g)/3;
+        report.check
+        (
+            "neoHookean: simple shear P_xy = mu g, P_yx = mu g (1 + g^2/3), "
+            "P_ii = -mu g^2/3",
+            mag(neo->P(F) - P)/mag(P),
+            1e-14
+        );
+
+        const scalar a = 1.3;
+        F = tensor::I;
+        F.xx() = a;
+        P = Zero;
+        const scalar iso = mu*Foam::pow(a, -2.0/3.0);
+        P.xx() = iso*(a - (sqr(a) + 2)/(3*a)) + kappa*(a - 1);
+        P.yy() = iso*(1 - (sqr(a) + 2)/3) + kappa*(a - 1)*a;
+        P.zz() = P.yy();
+        report.check
+        (
+            "neoHookean: uniaxial stretch F = diag(a, 1, 1)",
+            mag(neo->P(F) - P)/mag(P),
             1e-14
         );
     }

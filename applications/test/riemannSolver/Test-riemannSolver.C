@@ -16,6 +16,13 @@ Description
       opposite traction;
     - upwinding: a pure normal (tangential) momentum jump gives the traction
       Up/2 (Us/2) times the jump;
+    - the wave speeds: Up = sqrt((lambda + 2 mu)/rho) and Us = sqrt(mu/rho)
+      computed here from E, nu and rho of constant/mechanicalProperties;
+    - the contact velocity of a traction jump against the 1D acoustic
+      closed form: equal momenta and tractions tL, tR = tL + [[t]] give
+      p^C - p = ([[t]].n) n/(2 Up) + (I - n n)[[t]]/(2 Us) (the two
+      characteristics meet with momenta whose difference carries the
+      traction jump over the impedances rho Up and rho Us);
     - every boundary condition of the test case imposes what it claims
       (zero normal velocity and shear traction on symmetric planes, ...),
       and returns the interior state when that state already satisfies it.
@@ -55,6 +62,27 @@ int main(int argc, char *argv[])
     const scalar rho = law->rho();
     const scalar pScale = rho*Up;   // momentum of a 1 m/s velocity, ...
     const scalar tScale = law->E(); // ... and a unit strain
+
+    // The wave speeds from the material entries, independently of the law
+    const IOdictionary properties
+    (
+        IOobject
+        (
+            "mechanicalProperties", runTime.constant(), mesh,
+            IOobject::MUST_READ
+        )
+    );
+    const scalar E0(properties.get<scalar>("E"));
+    const scalar nu0(properties.get<scalar>("nu"));
+    const scalar rho0(properties.get<scalar>("rho"));
+    const scalar mu0 = E0/(2*(1 + nu0));
+    const scalar lambda0 = E0*nu0/((1 + nu0)*(1 - 2*nu0));
+    const scalar Up0 = Foam::sqrt((lambda0 + 2*mu0)/rho0);
+    const scalar Us0 = Foam::sqrt(mu0/rho0);
+    Info<< "Up " << Up << " (closed form " << Up0 << "), Us " << Us
+        << " (closed form " << Us0 << ")" << nl;
+    report.check("Up = sqrt((lambda + 2 mu)/rho)", mag(Up - Up0)/Up0, 1e-14);
+    report.check("Us = sqrt(mu/rho)", mag(Us - Us0)/Us0, 1e-14);
 
     auto randomVector = [&](const scalar scale)
     {
@@ -108,6 +136,24 @@ int main(int argc, char *argv[])
         (
             "upwinding: tangential jump gives Us/2 [[p]]",
             mag(tC - tL - 0.5*Us*pScale*tangent/mag(tangent))/tScale,
+            1e-14
+        );
+
+        // A traction jump at equal momenta: the closed-form contact
+        // velocity with the closed-form wave speeds
+        const vector jump(randomVector(tScale));
+        riemann->flux(pL, tL, pL, tL + jump, n, pC, tC);
+        const vector jumpN((jump & n)*n);
+        report.check
+        (
+            "traction jump: p^C - p = [[t]]n/(2 Up) + [[t]]s/(2 Us)",
+            mag(pC - pL - jumpN/(2*Up0) - (jump - jumpN)/(2*Us0))/pScale,
+            1e-14
+        );
+        report.check
+        (
+            "traction jump: t^C = mean of the tractions",
+            mag(tC - tL - 0.5*jump)/tScale,
             1e-14
         );
     }
