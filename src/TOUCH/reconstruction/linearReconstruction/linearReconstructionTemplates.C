@@ -67,6 +67,7 @@ void Foam::linearReconstruction::updateCells
     }
 
     const bool limited = (scheme_ == scheme::limitedLinear);
+    const bool compressive = limited && limiter_->compressive();
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const label nInternal = mesh_.nInternalFaces();
@@ -249,7 +250,23 @@ void Foam::linearReconstruction::updateCells
             largestDown,
             tolerance
         ).components(phi);
-        limiter_->factors(phi, packed::nComponents);
+        if (compressive)
+        {
+            scalar larger[packed::nComponents];
+            packed::largerRatios
+            (
+                largest - centre,
+                smallest - centre,
+                largestUp,
+                largestDown,
+                tolerance
+            ).components(larger);
+            limiter_->factors(phi, larger, packed::nComponents);
+        }
+        else
+        {
+            limiter_->factors(phi, packed::nComponents);
+        }
 
         const vector phip(phi[0], phi[1], phi[2]);
         const tensor phiP
