@@ -67,7 +67,6 @@ void Foam::linearReconstruction::updateCells
     }
 
     const bool limited = (scheme_ == scheme::limitedLinear);
-    const bool compressive = limited && limiter_->compressive();
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     const label nInternal = mesh_.nInternalFaces();
@@ -250,23 +249,7 @@ void Foam::linearReconstruction::updateCells
             largestDown,
             tolerance
         ).components(phi);
-        if (compressive)
-        {
-            scalar larger[packed::nComponents];
-            packed::largerRatios
-            (
-                largest - centre,
-                smallest - centre,
-                largestUp,
-                largestDown,
-                tolerance
-            ).components(larger);
-            limiter_->factors(phi, larger, packed::nComponents);
-        }
-        else
-        {
-            limiter_->factors(phi, packed::nComponents);
-        }
+        limiter_->factors(phi, packed::nComponents);
 
         const vector phip(phi[0], phi[1], phi[2]);
         const tensor phiP
