@@ -273,18 +273,6 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     {
         checkInitialVelocity();
     }
-
-    const scalar stableCFL = update_->stableCFL(rungeKutta_.name());
-    if (timeStep_.CFL() > stableCFL)
-    {
-        WarningInFunction
-            << "Entry 'CFL' = " << timeStep_.CFL() << " in "
-            << controls_.name() << " is above " << stableCFL
-            << ", the largest CFL number at which FUpdate "
-            << update_->type() << " with timeScheme " << rungeKutta_.name()
-            << " was measured stable (validation/stabilityMap): the energy"
-            << " may grow and cells invert" << endl;
-    }
 }
 
 
@@ -321,57 +309,6 @@ bool Foam::touchSolid::advance(const scalar dt)
     law_->commitStep(F_);
 
     return true;
-}
-
-
-void Foam::touchSolid::reportInvalidCell
-(
-    const label celli,
-    const label stage,
-    const scalar dt
-) const
-{
-    // The boundary face nearest to the cell in the reference configuration
-    const point& x0 = mesh_.C()[celli];
-    word nearestPatch("none");
-    scalar nearestDistance = GREAT;
-    for (const fvPatch& patch : mesh_.boundary())
-    {
-        if (patch.coupled() || isA<emptyFvPatch>(patch))
-        {
-            continue;
-        }
-        for (const point& c : patch.Cf())
-        {
-            const scalar d = mag(c - x0);
-            if (d < nearestDistance)
-            {
-                nearestDistance = d;
-                nearestPatch = patch.name();
-            }
-        }
-    }
-
-    const tensor& F = F_[celli];
-    const scalar t = mesh_.time().value();
-
-    Pout<< "touchSolid: invalid cell " << celli << " (first on this rank)"
-        << nl << "    current centre   " << x0 + D_[celli]
-        << nl << "    reference centre " << x0
-        << nl << "    J = det F        " << det(F)
-        << nl << "    F                " << F
-        << nl << "    |lm|             " << mag(lm_[celli])
-        << nl << "    finite           "
-        << (std::isfinite(det(F)) && std::isfinite(mag(lm_[celli]))
-            ? "yes" : "no")
-        << nl << "    step             " << t - dt << " -> " << t
-        << " (dt = " << dt << ')'
-        << nl << "    stage            " << stage << " of " << nStages()
-        << " of " << rungeKutta_.name() << " (stage time "
-        << t - dt + rungeKutta_.stageTime(stage)*dt << ')'
-        << nl << "    nearest boundary " << nearestPatch << " ("
-        << nearestDistance << " m from the reference centre)"
-        << nl << "    law              " << law_->type() << endl;
 }
 
 

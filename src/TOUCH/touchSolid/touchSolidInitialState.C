@@ -9,8 +9,7 @@ Description
     start time's lm or built as rho U from its velocity U [m/s], whichever
     exists (lm first: a restart, and cases set up in momentum), with the
     boundary conditions of the field that was read; and the checks of that
-    state (dimensions, solid boundary condition types, an initial velocity
-    that a clamped patch or a symmetric plane forbids).
+    state (dimensions, solid boundary condition types).
 
 \*---------------------------------------------------------------------------*/
 
@@ -344,60 +343,6 @@ Foam::tmp<Foam::volVectorField> Foam::touchSolid::initialMomentum
 }
 
 
-void Foam::touchSolid::checkInitialVelocity() const
-{
-    // The velocity of the cells next to a patch that fixes it: nonzero
-    // there, the body starts with a jump at the patch (an impact on a
-    // clamped face does; a mistaken set-up does too).  A velocity that
-    // vanishes smoothly at the patch keeps a few per cent of its peak in
-    // the adjacent cells of a coarse mesh (twisting column at 2 x 12 x 2
-    // cells: 4.6 %), a body launched at the patch keeps all of it
-    const scalar tolerance = 0.1;
-
-    const scalarField rho(cellDensity(mesh_, *law_));
-    const vectorField U(lm_.primitiveField()/rho);
-    const scalar maxU = gMax(mag(U)());
-    if (maxU <= 0)
-    {
-        return;
-    }
-
-    forAll(lm_.boundaryField(), patchi)
-    {
-        const fvPatchVectorField& pf = lm_.boundaryField()[patchi];
-        const bool clamped = isA<clampedFvPatchVectorField>(pf);
-        const bool symmetric = isA<symmetricPlaneFvPatchVectorField>(pf);
-        if (!clamped && !symmetric)
-        {
-            continue;
-        }
-
-        const labelUList& cells = pf.patch().faceCells();
-        const vectorField n(pf.patch().nf());
-        scalar worst = 0;
-        forAll(cells, facei)
-        {
-            const vector& v = U[cells[facei]];
-            worst = max(worst, clamped ? mag(v) : mag(v & n[facei]));
-        }
-        reduce(worst, maxOp<scalar>());
-
-        if (worst > tolerance*maxU)
-        {
-            WarningInFunction
-                << "The initial velocity violates the "
-                << (clamped ? "clamped" : "symmetricPlane") << " patch "
-                << pf.patch().name() << ": its adjacent cells move at up to "
-                << worst << " m/s" << (clamped ? "" : " normal to it")
-                << ", " << worst/maxU << " of the largest |U| " << maxU
-                << " m/s" << nl
-                << "    The body starts with a velocity jump at the patch"
-                << " (intended in an impact on a clamped face)" << endl;
-        }
-    }
-}
-
-
 template<class GeoField>
 Foam::tmp<GeoField> Foam::touchSolid::readDisplacement
 (
@@ -463,52 +408,6 @@ Foam::touchSolid::readDisplacement<Foam::pointVectorField>
     const word&,
     const word&
 );
-
-
-void Foam::touchSolid::checkInput() const
-{
-    // The sub-dictionary of a model that is not selected is ignored
-    // (kept while switching models back and forth): say so
-    checkUnusedCoeffs
-    (
-        controls_, "system/fvSolution TOUCH", "reconstruction or FUpdate"
-    );
-
-    // A modulus in the wrong unit (MPa for Pa) is legal but gives a wave
-    // speed no material has: elastic solids lie between a soft gel's
-    // (about 10 m/s) and diamond's (about 18000 m/s)
-    for (label m = 0; m < law_->nMaterials(); ++m)
-    {
-        const scalar Up = law_->materialUp(m);
-        if (Up < 10 || Up > 20000)
-        {
-            WarningInFunction
-                << "The longitudinal wave speed Up = " << Up << " m/s of"
-                << " material " << m << " in constant/mechanicalProperties"
-                << " lies outside 10 .. 20000 m/s, the range of solid"
-                << " materials: are E [Pa] and rho [kg/m^3] in SI units"
-                << " (rho " << law_->materialRho(m) << " kg/m^3)?" << endl;
-        }
-    }
-
-    // An initial F whose stress overflows (a component of 1e300) is
-    // finite with J > 0, and would stop the first step with a
-    // floating-point trap: name it while the input is read
-    tensorField P(F_.size());
-    law_->stress(F_.primitiveField(), P);
-    forAll(P, celli)
-    {
-        if (!std::isfinite(magSqr(P[celli])))
-        {
-            FatalErrorInFunction
-                << "The stress of cell " << celli << " at "
-                << mesh_.C()[celli] << " overflows for the initial F = "
-                << F_[celli] << " read from "
-                << F_.time().timeName()/"F" << " (law "
-                << law_->type() << ')' << nl << exit(FatalError);
-        }
-    }
-}
 
 
 // ************************************************************************* //
