@@ -4,16 +4,20 @@ displacement pointD, coloured by the von Mises stress, at 3 ms
 
     paraview --state=state.py
 
-The case is opened through case.foam in the working folder (made here
-when absent), so the state is independent of where the tutorial lives.
+The case is opened through case.foam in the working folder (made
+when absent), so the state is independent of where the tutorial lives;
+the showing is bin/tools/paraviewState.py's (etc/bashrc sourced).
 """
 
 import os
+import sys
 
-from paraview.simple import (  # ParaView's own module
-    ColorBy, GetActiveViewOrCreate, GetAnimationScene,
-    GetColorTransferFunction, OpenFOAMReader, Render, ResetCamera, Show,
-    WarpByVector)
+if "TOUCH_PROJECT_DIR" not in os.environ:
+    sys.exit("state.py: TOUCH_PROJECT_DIR is not set: source touchFoam's"
+             " etc/bashrc before starting ParaView")
+sys.path.insert(0, os.path.join(os.environ["TOUCH_PROJECT_DIR"], "bin",
+                                "tools"))
+from paraviewState import show_deformed  # noqa: E402
 
 FIELD = "sigmaEq"       # cell field shown
 TIME = 0.003            # [s] the wave has passed the hole
@@ -21,33 +25,4 @@ VIEW = (0, 0, 1)        # along z, the plane of the plate
 UP = (0, 1, 0)
 SCALE = 1.0
 
-if not os.path.exists("case.foam"):
-    open("case.foam", "w").close()
-case = OpenFOAMReader(registrationName="case.foam", FileName="case.foam")
-case.MeshRegions = ["internalMesh"]
-case.CellArrays = [FIELD]
-case.PointArrays = ["pointD"]
-case.UpdatePipelineInformation()
-
-scene = GetAnimationScene()
-scene.UpdateAnimationUsingDataTimeSteps()
-written = list(case.TimestepValues) or [0.0]
-scene.AnimationTime = min(written, key=lambda t: abs(t - TIME))
-
-body = WarpByVector(registrationName="deformed (pointD)", Input=case)
-body.Vectors = ["POINTS", "pointD"]
-body.ScaleFactor = SCALE
-
-view = GetActiveViewOrCreate("RenderView")
-display = Show(body, view)
-ColorBy(display, ("CELLS", FIELD))
-lut = GetColorTransferFunction(FIELD)
-lut.ApplyPreset("Rainbow Uniform", True)
-display.RescaleTransferFunctionToDataRange(False, True)
-display.SetScalarBarVisibility(view, True)
-
-view.CameraFocalPoint = [0.0, 0.0, 0.0]
-view.CameraPosition = list(VIEW)
-view.CameraViewUp = list(UP)
-ResetCamera(view)
-Render(view)
+show_deformed(FIELD, TIME, VIEW, UP, SCALE)
