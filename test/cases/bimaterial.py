@@ -5,7 +5,8 @@ dictionary of constant/mechanicalProperties).
 
     /usr/bin/python3 test/cases/bimaterial.py
 
-Extras: --with-meshing (bin/inpToGmsh, gmshToFoam)
+Extras: --with-meshing
+(gmsh for bin/inpToGmsh; gmshToFoam is OpenFOAM's)
 
   - a 1D bar in uniaxial strain (200 x 1 x 1 C3D8, 'sides' symmetric
     planes), 'left' zone rho1, 'right' zone rho2 = 4 rho1, the same E and
