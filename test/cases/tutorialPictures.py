@@ -3,19 +3,23 @@
 
     /usr/bin/python3 test/cases/tutorialPictures.py
 
-Extras: --with-paraview
+Extras: --with-paraview --with-plots --with-meshing
 
 Needs pvbatch and xvfb-run (bin/touchSetup --with-paraview); without them
 it passes with the message 'skipped: pvbatch or xvfb-run not installed'.
-taylorImpact -n 2 (60 cells, to 80 us), barRebound -n 2 (60 cells, to
-400 us) and twistingColumn -n 2 (48 cells, to 0.3 s) run through their own
-./Allrun, which ends with render.py in pvbatch.  Asserted:
+Every tutorial but the ring and the torus (their pictures are those of
+the impact tests) runs small through its own ./Allrun, which ends with
+render.py in pvbatch and plot.py: taylorImpact -n 2 (60 cells, to 80 us),
+barRebound -n 2 (60 cells, to 400 us), twistingColumn -n 2 (48 cells, to
+0.3 s), elasticImpact -n 50, holedPlate -n 2 (gmsh), spinningCube -n 3,
+swingingCube -n 4, unstructuredCube -n 4.  Asserted:
   - no field a render.py asks for is missing from the case (the log has no
     'no cell field'), and every picture is there: taylorImpact pressure,
     sigmaEq and epsilonP at 10, 30, 50, 80 us, barRebound pressure at 30,
     60, 120, 180, 270, 400 us, the contact of the wall patch at the same
     times for both, twistingColumn pressure and sigmaEq at 0.1, 0.2,
-    0.3 s;
+    0.3 s, and the pictures of the others (TUTORIALS below);
+  - where matplotlib is installed, the plot each plot.py writes (PLOTS);
   - each is a PNG of the size render.py asks for (read back with VTK);
   - the body is seen and the colour range shows it: in each field picture
     (the colour bar and the time label left out) at least 2 % of the
@@ -59,11 +63,28 @@ TUTORIALS = {
     "twistingColumn": (["-n", "2"], (600, 1000), {
         "pressure": ["0.1s", "0.2s", "0.3s"],
         "sigmaEq": ["0.1s", "0.2s", "0.3s"]}),
+    "elasticImpact": (["-n", "50"], (1200, 200), {
+        "pressure": ["0.1ms", "0.2ms", "0.3ms", "0.4ms", "0.5ms"]}),
+    "holedPlate": (["-n", "2"], (1000, 600), {
+        "sigmaEq": ["2ms", "3ms", "5ms", "10ms"],
+        "pressure": ["2ms", "3ms", "5ms", "10ms"]}),
+    "spinningCube": (["-n", "3"], (800, 800), {
+        "sigmaEq": ["0.5s", "1s", "1.4s"],
+        "pressure": ["0.5s", "1s", "1.4s"]}),
+    "swingingCube": (["-n", "4"], (800, 800), {
+        "sigmaEq": ["1ms", "2ms", "3ms"]}),
+    "unstructuredCube": (["-n", "4"], (800, 800), {
+        "sigmaEq": ["1ms", "2ms", "3ms"]}),
 }
+#: tutorial: the plot its plot.py writes (made when matplotlib is installed)
+PLOTS = {"taylorImpact": "histories.png", "barRebound": "histories.png",
+         "elasticImpact": "profiles.png", "holedPlate": "histories.png",
+         "spinningCube": "histories.png", "swingingCube": "histories.png",
+         "unstructuredCube": "histories.png"}
 LIMITS = {"coloured": 0.02, "hueBins": 3, "hueShare": 1e-3}
 #: hue bins (of 12) of the contact pictures' two colours
 RED, BLUE = 11, 7
-UNITS = {"us": 1e-6, "s": 1.0}
+UNITS = {"us": 1e-6, "ms": 1e-3, "s": 1.0}
 
 STATS = """
 import json, sys
@@ -75,7 +96,7 @@ print("STATS " + json.dumps({p: picture_colours(p) for p in sys.argv[1:]}))
 def wall_contact(case, label):
     """The patch values of the written field contact on 'wall' at the time
     of the picture label ('30us')."""
-    m = re.match(r"([0-9.]+)(us|s)$", label)
+    m = re.match(r"([0-9.]+)(us|ms|s)$", label)
     t = float(m.group(1)) * UNITS[m.group(2)]
     folder = run.time_dir(case, t, tol=1e-3 * t)
     text = foamfile.FoamField(os.path.join(folder, "contact")) \
@@ -112,6 +133,13 @@ def pictures(root, tutorial, failures):
     if missing:
         failures.append("%s: render.py asks for fields the case does not "
                         "write: %s" % (tutorial, " ".join(missing)))
+
+    plot = PLOTS.get(tutorial)
+    if plot and "plots skipped" not in allrun:
+        path = os.path.join(case, plot)
+        if not os.path.exists(path) or os.path.getsize(path) == 0:
+            failures.append("%s: plot.py wrote no %s (log.plot.py)"
+                            % (tutorial, plot))
 
     names = ["%s_%s.png" % (field, label)
              for field, labels in expected.items() for label in labels]

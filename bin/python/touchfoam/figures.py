@@ -112,7 +112,8 @@ def _union_bounds(proxy, times):
 
 def render_deformed(fields, times, time_unit, view, up=(0, 1, 0),
                     wall=None, case=".", size=(900, 900), titles=None,
-                    percentiles=(1, 99), contact=None):
+                    percentiles=(1, 99), contact=None, scale=1.0,
+                    parallel=False):
     """PNG pictures <field>_<time>.png of the deformed body.
 
     fields       cell fields to colour by ('pressure', 'epsilonP', ...);
@@ -127,6 +128,8 @@ def render_deformed(fields, times, time_unit, view, up=(0, 1, 0),
     titles       {field: colour bar title}
     percentiles  the colour range of a field: these percentiles of its cell
                  values over all the times shown
+    scale        magnification of pointD (small deformations made visible)
+    parallel     parallel projection (a long thin body fills the picture)
     contact      (patch, view, up) of a rigidWall patch, or None: pictures
                  contact_<time>.png of that patch, warped by pointD, its
                  faces in contact (the field contact = 1) red and the
@@ -156,6 +159,7 @@ def render_deformed(fields, times, time_unit, view, up=(0, 1, 0),
 
     body = pv.WarpByVector(Input=reader)
     body.Vectors = ["POINTS", "pointD"]
+    body.ScaleFactor = float(scale)
 
     view_ = pv.CreateView("RenderView")
     view_.ViewSize = list(size)
@@ -220,7 +224,7 @@ def render_deformed(fields, times, time_unit, view, up=(0, 1, 0),
             view_.ViewTime = t
             body.UpdatePipeline(t)
             label.Text = "t = %s" % time_label(t, time_unit)
-            _frame(view_, bounds, view, up, size)
+            _frame(view_, bounds, view, up, size, parallel)
             name = "%s_%s.png" % (
                 field, time_label(t, time_unit).replace(" ", ""))
             pv.SaveScreenshot(os.path.join(case, name), view_,
@@ -458,3 +462,38 @@ def energy_panel(data):
     return ("energy [J]", [(t, data["kineticEnergy"], "kinetic"),
                            (t, data["strainEnergy"], "stored"),
                            (t, data["totalEnergy"], "total")])
+
+
+def swinging_cube_plot(case, title):
+    """histories.png of a swinging-cube run (hexahedra or tetrahedra): the
+    L2 errors of v and P at the written times against the closed form, and
+    the kinetic energy per step against the closed form's
+    E sin^2(omega t) (the energy swings between strain and motion; a phase
+    or amplitude error shows at once)."""
+    from .analytic import SwingingCube
+    from .cases import material
+    from .postprocess import swinging_cube_errors
+
+    mat = material(case)
+    sol = SwingingCube(E=mat["E"], nu=mat["nu"], rho=mat["rho"])
+    data = monitor(case)
+    t = data["Time"]
+    E = data["totalEnergy"]
+    times = [w for w in _written(case)[0] if w > 0]
+    ev, eP = [], []
+    for w in times:
+        e = swinging_cube_errors(case, t=w)
+        ev.append(max(e[c]["relAmplitude"] for c in ("vx", "vy", "vz")))
+        eP.append(max(e[c]["relAmplitude"] for c in ("Pxx", "Pyy", "Pzz")))
+    dense = np.linspace(0.0, float(t.max()), 200)
+    kinetic = E[0] * np.sin(sol.omega * dense) ** 2
+    return plot_panels(
+        [
+            ("kinetic energy [J]",
+             [(t, data["kineticEnergy"], "touchFoam"),
+              (dense, kinetic, "closed form E sin^2(omega t)")]),
+            ("L2 error / amplitude",
+             [(times, ev, "velocity"), (times, eP, "first Piola stress")]),
+            energy_panel(data),
+        ],
+        "histories.png", "ms", title=title, case=case)
