@@ -34,6 +34,7 @@ import re
 import shutil
 import subprocess
 import sys
+import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "..", "..", "bin", "python"))
@@ -104,8 +105,8 @@ def add_max_steps(case, steps):
 
 
 def render(case):
-    """The driver in pvbatch (two retries: Xvfb is at times not ready,
-    and pvbatch then aborts without output)."""
+    """The driver in pvbatch (three retries, a little later each time:
+    Xvfb is at times not ready, and pvbatch then aborts without output)."""
     with open(os.path.join(case, "stateDriver.py"), "w") as f:
         f.write(DRIVER)
     env = dict(os.environ)
@@ -113,7 +114,11 @@ def render(case):
         [os.path.join(run.project_dir(), "bin", "python")]
         + [p for p in env.get("PYTHONPATH", "").split(os.pathsep) if p])
     out = ""
-    for _ in range(3):
+    for attempt in range(4):
+        if attempt:
+            # Another Xvfb starting at the same moment takes the display
+            # xvfb-run picked: wait before the next try
+            time.sleep(2.0 * attempt)
         out = subprocess.run(["xvfb-run", "-a", "pvbatch", "stateDriver.py"],
                              cwd=case, env=env, stdout=subprocess.PIPE,
                              stderr=subprocess.STDOUT,
