@@ -201,6 +201,7 @@ int main(int argc, char *argv[])
         // A cell with a boundary face is also bounded by its own
         // extrapolation to that face (linearReconstruction): check the others
         scalar overshoot = 0;
+        label nValues = 0;
         forAll(own, facei)
         {
             for (const label c : {own[facei], nei[facei]})
@@ -209,6 +210,7 @@ int main(int argc, char *argv[])
                 {
                     continue;
                 }
+                ++nValues;
                 const vector r(Cf[facei] - C[c]);
                 const vector pf
                 (
@@ -229,9 +231,21 @@ int main(int argc, char *argv[])
             }
         }
 
+        //- The count shows the check saw the mesh (a mesh of boundary
+        //  cells alone would pass it vacuously)
+        const label nInterior = mesh.nCells() - nearBoundary.count();
+        if (nInterior == 0 || nValues == 0)
+        {
+            FatalErrorInFunction
+                << "no cell without a boundary face in " << mesh.nCells()
+                << " cells: the extrema check needs a larger mesh"
+                << exit(FatalError);
+        }
         report.check
         (
-            limiter + ": no face value outside its cell's range",
+            limiter + ": no face value outside its cell's range ("
+          + Foam::name(nValues) + " face values of "
+          + Foam::name(nInterior) + " interior cells)",
             overshoot,
             1e-12
         );
