@@ -1,8 +1,7 @@
 #!/usr/bin/python3
-"""Pictures of the swinging cube: von Mises stress on the cube warped by
-pointD (200 times; pointD counts from the strained start, so the shape is
-u(t) - u(0)) at 1, 2 and 3 ms, seen from above the corner (1, 1, 1).  Run
-in the case by Allrun:
+"""Pictures of the swinging cube (figures.swinging_cube_pictures): von Mises
+stress at 1, 2 and 3 ms on the cube warped by pointD magnified 200 times.
+Run in the case by Allrun:
 
     xvfb-run -a pvbatch render.py
 
@@ -10,14 +9,6 @@ Writes sigmaEq_<t>ms.png.
 """
 
 # The touchfoam package: bin/python, on PYTHONPATH after etc/bashrc
-from touchfoam.figures import render_deformed
+from touchfoam.figures import swinging_cube_pictures
 
-render_deformed(
-    fields=["sigmaEq"],
-    titles={"sigmaEq": "von Mises stress [Pa]"},
-    times=[0.001, 0.002, 0.003],
-    time_unit="ms",
-    view=(1, 0.8, 1.2),             # above the corner (1, 1, 1)
-    size=(800, 800),
-    scale=200.0,
-)
+swinging_cube_pictures()

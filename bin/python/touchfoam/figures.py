@@ -497,3 +497,20 @@ def swinging_cube_plot(case, title):
             energy_panel(data),
         ],
         "histories.png", "ms", title=title, case=case)
+
+
+def swinging_cube_pictures(case="."):
+    """sigmaEq_<t>ms.png of a swinging-cube run (hexahedra or tetrahedra):
+    von Mises stress on the cube warped by pointD magnified 200 times
+    (pointD counts from the strained start, so the shape is u(t) - u(0))
+    at 1, 2 and 3 ms, seen from above the corner (1, 1, 1)."""
+    return render_deformed(
+        fields=["sigmaEq"],
+        titles={"sigmaEq": "von Mises stress [Pa]"},
+        times=[0.001, 0.002, 0.003],
+        time_unit="ms",
+        view=(1, 0.8, 1.2),
+        size=(800, 800),
+        scale=200.0,
+        case=case,
+    )
