@@ -11,6 +11,7 @@ License
 #include "Time.H"
 #include "Constant.H"
 #include "TableBase.H"
+#include "fvMesh.H"
 
 // * * * * * * * * * * * * * * * Local Constants * * * * * * * * * * * * * * //
 
@@ -306,6 +307,42 @@ void Foam::rigidWallFvPatchVectorField::updateFriction
 }
 
 
+void Foam::rigidWallFvPatchVectorField::checkUpdate()
+{
+    updateChecked_ = true;
+
+    const dictionary& controls =
+        patch().boundaryMesh().mesh().solutionDict().subDict("TOUCH");
+    const word update
+    (
+        controls.getOrDefault<word>("FUpdate", "compatible")
+    );
+
+    if (update == "compatible")
+    {
+        FatalIOErrorInFunction(controls)
+            << "Patch " << patch().name() << " is a rigidWall with friction"
+            << " and FUpdate is compatible (" << controls.name() << "):"
+            << " its normal wall force is the point constraint's reaction,"
+            << " which the friction law does not see (a sliding block"
+            << " decelerated 4 % too little, or lifted off and gained"
+            << " energy)" << nl
+            << "Valid FUpdate with friction: plain (constrained: with a"
+            << " warning)" << nl
+            << exit(FatalIOError);
+    }
+
+    if (update != "plain")
+    {
+        WarningInFunction
+            << "Patch " << patch().name() << ": friction with FUpdate "
+            << update << " is not validated (the sliding block's energy"
+            << " grew by 2e-7 of its kinetic energy in steps); plain is"
+            << endl;
+    }
+}
+
+
 Foam::vector Foam::rigidWallFvPatchVectorField::wallDisplacement
 (
     const scalar t
@@ -424,7 +461,8 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     stageForce_(Zero),
     friction_(frictionLaw::New(dictionary())),
     frictionTraction_(),
-    slip_()
+    slip_(),
+    updateChecked_(false)
 {}
 
 
@@ -454,7 +492,8 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     stageForce_(Zero),
     friction_(frictionLaw::New(dict)),
     frictionTraction_(friction_->frictionless() ? 0 : p.size(), Zero),
-    slip_(readSlip(dict))
+    slip_(readSlip(dict)),
+    updateChecked_(false)
 {
     checkSide();
 }
@@ -487,7 +526,8 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
         ptf.friction_->frictionless()
       ? vectorField()
       : vectorField(ptf.slip_, mapper)
-    )
+    ),
+    updateChecked_(false)
 {}
 
 
@@ -507,7 +547,8 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     stageForce_(ptf.stageForce_),
     friction_(ptf.friction_->clone()),
     frictionTraction_(ptf.frictionTraction_),
-    slip_(ptf.slip_)
+    slip_(ptf.slip_),
+    updateChecked_(ptf.updateChecked_)
 {}
 
 
@@ -528,7 +569,8 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     stageForce_(ptf.stageForce_),
     friction_(ptf.friction_->clone()),
     frictionTraction_(ptf.frictionTraction_),
-    slip_(ptf.slip_)
+    slip_(ptf.slip_),
+    updateChecked_(ptf.updateChecked_)
 {}
 
 
@@ -603,6 +645,10 @@ void Foam::rigidWallFvPatchVectorField::updateActiveSet
 
     if (!friction_->frictionless())
     {
+        if (!updateChecked_)
+        {
+            checkUpdate();
+        }
         updateFriction(s);
     }
 
