@@ -20,7 +20,9 @@ muKinetic 0.3; plain update), on N = 4 (8 x 4 cells):
               'slip' entry) set to zero;
   oblique     no gravity, the block 1 mm above the wall flies at
               (0.5, -0.5) m/s onto it and rebounds, with friction and
-              frictionless.
+              frictionless;
+  parallel    the slide to 0.35 s (through the stop) on 2 ranks (scotch:
+              the wall cut between them) against serial.
 
 Asserted:
   - slide: mean deceleration v0/t_stop within 2 % of muKinetic g, the
@@ -50,6 +52,8 @@ Asserted:
     p_y) and gains spin against its sliding (L_z about the centre < 0
     for a block sliding along +x on a wall below it), 100 times the
     frictionless one;
+  - parallel: lm and F at 0.35 s equal serial's to 1e-12 of rho0 v0
+    and 1, with wall faces on both ranks;
   - FUpdate compatible with friction stops the run naming FUpdate and
     plain (validation/slidingBlock/FINDINGS.md: the block decelerated 4 %
     too little, or lifted off and gained energy).
@@ -345,6 +349,36 @@ def oblique(root, failures):
                spin_f[-1] / spin_scale))
 
 
+def parallel(root, failures):
+    """The slide to 0.35 s (through the stop) on 2 ranks (scotch, the wall
+    cut between them) against the serial run."""
+    serial = make_case(root, "serial", 0.35, precise=True)
+    run.run(["touchFoam"], serial, timeout=testing.RUN_TIMEOUT)
+    split = make_case(root, "parallel", 0.35, precise=True)
+    run.write_options(split, "system/decomposeOptions",
+                      {"numberOfSubdomains": 2, "method": "scotch"})
+    run.run(["decomposePar"], split)
+    run.run_parallel(["touchFoam"], split, 2, timeout=testing.RUN_TIMEOUT)
+    run.run(["reconstructPar", "-latestTime"], split)
+    wall_faces = []
+    for rank in (0, 1):
+        with open(os.path.join(split, "processor%d" % rank, "constant",
+                               "polyMesh", "boundary")) as f:
+            m = re.search(r"bottom\s*\{[^}]*nFaces\s+(\d+);", f.read())
+        wall_faces.append(int(m.group(1)) if m else 0)
+    n = PolyMesh(serial).n_cells
+    scale = {"lm": cases.material(serial)["rho"] * V0, "F": 1.0}
+    diff = max(np.abs(
+        testing.read_internal(run.time_dir(split, 0.35), f, n)
+        - testing.read_internal(run.time_dir(serial, 0.35), f, n)).max()
+        / scale[f] for f in ("lm", "F"))
+    if diff > 1e-12 or min(wall_faces) == 0:
+        failures.append("parallel: lm, F at 0.35 s differ from serial by"
+                        " %.1e (wall faces per rank %s)" % (diff, wall_faces))
+    return ("2 ranks (wall faces %d + %d): lm, F at 0.35 s within %.1e of"
+            " serial" % (wall_faces[0], wall_faces[1], diff))
+
+
 def refusal(root, failures):
     """Friction with the compatible update is refused, naming FUpdate."""
     case = make_case(root, "compatible", 0.01)
@@ -365,7 +399,8 @@ def refusal(root, failures):
 def body():
     root = testing.work_dir(NAME)
     lines, failures = [], []
-    for check in (slide_checks, zero_mu, restart, oblique, refusal):
+    for check in (slide_checks, zero_mu, restart, oblique, parallel,
+                  refusal):
         lines.append(check(root, failures))
     return testing.verdict(lines, failures)
 
