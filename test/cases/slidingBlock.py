@@ -27,7 +27,7 @@ muKinetic 0.3; plain update), on N = 4 (8 x 4 cells):
 Asserted:
   - slide: mean deceleration v0/t_stop within 2 % of muKinetic g, the
     distance (integral of p_x/M over the steps) within 3 % of
-    v0^2/(2 mu g) (a rigid block's; CONTACT.md section 4), then at rest:
+    v0^2/(2 mu g) (a rigid block's), then at rest:
     speed < 1e-3 v0 from 0.02 s after the stop to the end;
   - at every stage and face |t_t| <= mu p_N (1e-12 of the largest mu p_N)
     and the face's friction work rate t_t . (v* - v_w) |S| <= 0, and the

@@ -2,7 +2,7 @@
 
 The closed form of a rigid block launched at v0 along the wall: it
 decelerates at muKinetic g, stops after t_s = v0/(mu g) having slid
-v0^2/(2 mu g), and stays at rest (CONTACT.md section 4).  A deformable
+v0^2/(2 mu g), and stays at rest (Coulomb's law for a rigid body).  A deformable
 block does so on average once its waves settle.
 """
 
