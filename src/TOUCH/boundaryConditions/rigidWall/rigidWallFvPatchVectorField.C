@@ -11,6 +11,7 @@ License
 #include "Time.H"
 #include "Constant.H"
 #include "TableBase.H"
+#include "fvMesh.H"
 
 // * * * * * * * * * * * * * * * Local Constants * * * * * * * * * * * * * * //
 
@@ -52,6 +53,16 @@ namespace Foam
         "the wall's velocity, a Function1 of time with an exact integral"
         " (constant, polynomial, table, tableFile, csvFile)",
         "m/s", "(0 0 0)", "table ((0 (0 0 0)) (1e-4 (0 0.1 0)))"
+    );
+
+    static const describedEntry wallSlipEntry
+    (
+        "0/U (or 0/lm) boundaryField, type rigidWall", "slip",
+        "with friction, written by touchFoam with every time: each face's"
+        " sliding velocity relative to the wall at the last decision, zero"
+        " where it sticks (a restart continues with the same stick/slip"
+        " state)",
+        "m/s", "uniform (0 0 0)", "nonuniform List<vector> 2((0 0 0) (0.1 0 0))"
     );
 }
 
@@ -192,6 +203,146 @@ Foam::boolList Foam::rigidWallFvPatchVectorField::toBool
 }
 
 
+Foam::vectorField Foam::rigidWallFvPatchVectorField::readSlip
+(
+    const dictionary& dict
+) const
+{
+    if (friction_->frictionless())
+    {
+        return vectorField();
+    }
+
+    const word& name = wallSlipEntry.name();
+    if (dict.found(name, keyType::LITERAL))
+    {
+        return vectorField(name, dict, patch().size());
+    }
+
+    return vectorField(patch().size(), Zero);
+}
+
+
+void Foam::rigidWallFvPatchVectorField::updateFriction
+(
+    const interiorState& s
+)
+{
+    const vector wallVelocity(velocity_->value(s.time));
+    const scalar wallNormalSpeed = wallVelocity & normal_;
+    const tensor tangential(tensor::I - sqr(normal_));
+    const scalarField& magSf = patch().magSf();
+
+    // The stage's checks (debug only): the largest |t_t| - mu pN, the
+    // largest mu pN, the largest face work rate and their sum
+    const scalar mu = friction_->maxCoefficient();
+    scalar coneExcess = -GREAT;
+    scalar coneLimit = 0;
+    scalar facePower = -GREAT;
+    scalar power = 0;
+
+    forAll(contact_, facei)
+    {
+        // The interior's velocity relative to the wall, as momentum
+        const vector relative(s.p[facei] - s.rho[facei]*wallVelocity);
+
+        if (!contact_[facei])
+        {
+            frictionTraction_[facei] = Zero;
+            slip_[facei] = tangential & (relative/s.rho[facei]);
+            continue;
+        }
+
+        // The wall solution: its normal traction (as updateActiveSet's,
+        // > 0 in contact) and the tangential traction that holds the face
+        // at the wall's tangential velocity
+        const scalar pN =
+            (s.t[facei] & normal_)
+          - s.Up[facei]*((s.p[facei] & normal_) - s.rho[facei]*wallNormalSpeed);
+        const vector tStick
+        (
+            tangential & (s.t[facei] - s.Us[facei]*relative)
+        );
+
+        const vector t
+        (
+            friction_->tangentialTraction(tStick, pN, slip_[facei])
+        );
+
+        // The face's tangential velocity on its characteristic, relative
+        // to the wall: exactly zero where the law keeps tStick
+        frictionTraction_[facei] = t;
+        slip_[facei] = (t - tStick)/(s.rho[facei]*s.Us[facei]);
+
+        stageForce_ += t*magSf[facei];
+
+        if (debug)
+        {
+            const scalar facePowerI = (t & slip_[facei])*magSf[facei];
+            coneExcess = max(coneExcess, mag(t) - mu*pN);
+            coneLimit = max(coneLimit, mu*pN);
+            facePower = max(facePower, facePowerI);
+            power += facePowerI;
+        }
+    }
+
+    if (debug)
+    {
+        reduce(coneExcess, maxOp<scalar>());
+        reduce(coneLimit, maxOp<scalar>());
+        reduce(facePower, maxOp<scalar>());
+        reduce(power, sumOp<scalar>());
+
+        // Not in contact anywhere: nothing to report
+        if (facePower > -GREAT)
+        {
+            Info<< "rigidWall " << patch().name() << " friction: time "
+                << s.time << " stage " << s.stage
+                << " max(|t_t| - mu p_N) " << coneExcess
+                << " max(mu p_N) " << coneLimit
+                << " max face work rate " << facePower
+                << " work rate " << power << endl;
+        }
+    }
+}
+
+
+void Foam::rigidWallFvPatchVectorField::checkUpdate()
+{
+    updateChecked_ = true;
+
+    const dictionary& controls =
+        patch().boundaryMesh().mesh().solutionDict().subDict("TOUCH");
+    const word update
+    (
+        controls.getOrDefault<word>("FUpdate", "compatible")
+    );
+
+    if (update == "compatible")
+    {
+        FatalIOErrorInFunction(controls)
+            << "Patch " << patch().name() << " is a rigidWall with friction"
+            << " and FUpdate is compatible (" << controls.name() << "):"
+            << " its normal wall force is the point constraint's reaction,"
+            << " which the friction law does not see (a sliding block"
+            << " decelerated 4 % too little, or lifted off and gained"
+            << " energy)" << nl
+            << "Valid FUpdate with friction: plain (constrained: with a"
+            << " warning)" << nl
+            << exit(FatalIOError);
+    }
+
+    if (update != "plain")
+    {
+        WarningInFunction
+            << "Patch " << patch().name() << ": friction with FUpdate "
+            << update << " is not validated (the sliding block's energy"
+            << " grew by 2e-7 of its kinetic energy in steps); plain is"
+            << endl;
+    }
+}
+
+
 Foam::vector Foam::rigidWallFvPatchVectorField::wallDisplacement
 (
     const scalar t
@@ -307,7 +458,11 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     stepContact_(contact_),
     stepForce_(Zero),
     nStages_(0),
-    stageForce_(Zero)
+    stageForce_(Zero),
+    friction_(frictionLaw::New(dictionary())),
+    frictionTraction_(),
+    slip_(),
+    updateChecked_(false)
 {}
 
 
@@ -321,7 +476,11 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     solidFluxFvPatchVectorField
     (
         p, iF, dict,
-        wordList({"point", "normal", "velocity", "velocityCoeffs", "contact"})
+        wordList
+        ({
+            "point", "normal", "velocity", "velocityCoeffs", "contact",
+            "friction", "slip"
+        })
     ),
     point_(wallPointEntry.read(dict)),
     normal_(readNormal(p, dict)),
@@ -330,7 +489,11 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     stepContact_(contact_),
     stepForce_(Zero),
     nStages_(0),
-    stageForce_(Zero)
+    stageForce_(Zero),
+    friction_(frictionLaw::New(dict)),
+    frictionTraction_(friction_->frictionless() ? 0 : p.size(), Zero),
+    slip_(readSlip(dict)),
+    updateChecked_(false)
 {
     checkSide();
 }
@@ -352,7 +515,19 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     stepContact_(contact_),
     stepForce_(Zero),
     nStages_(0),
-    stageForce_(Zero)
+    stageForce_(Zero),
+    friction_(ptf.friction_->clone()),
+    frictionTraction_
+    (
+        ptf.friction_->frictionless() ? 0 : p.size(), Zero
+    ),
+    slip_
+    (
+        ptf.friction_->frictionless()
+      ? vectorField()
+      : vectorField(ptf.slip_, mapper)
+    ),
+    updateChecked_(false)
 {}
 
 
@@ -369,7 +544,11 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     stepContact_(ptf.stepContact_),
     stepForce_(ptf.stepForce_),
     nStages_(ptf.nStages_),
-    stageForce_(ptf.stageForce_)
+    stageForce_(ptf.stageForce_),
+    friction_(ptf.friction_->clone()),
+    frictionTraction_(ptf.frictionTraction_),
+    slip_(ptf.slip_),
+    updateChecked_(ptf.updateChecked_)
 {}
 
 
@@ -387,7 +566,11 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     stepContact_(ptf.stepContact_),
     stepForce_(ptf.stepForce_),
     nStages_(ptf.nStages_),
-    stageForce_(ptf.stageForce_)
+    stageForce_(ptf.stageForce_),
+    friction_(ptf.friction_->clone()),
+    frictionTraction_(ptf.frictionTraction_),
+    slip_(ptf.slip_),
+    updateChecked_(ptf.updateChecked_)
 {}
 
 
@@ -460,6 +643,15 @@ void Foam::rigidWallFvPatchVectorField::updateActiveSet
         }
     }
 
+    if (!friction_->frictionless())
+    {
+        if (!updateChecked_)
+        {
+            checkUpdate();
+        }
+        updateFriction(s);
+    }
+
     stepForce_ += stageForce_;
 }
 
@@ -499,6 +691,21 @@ void Foam::rigidWallFvPatchVectorField::flux
                 nn & (s.t[facei] - s.Up[facei]*(s.p[facei] - wallMomentum));
         }
     }
+
+    // Friction: the law's tangential traction, and the momentum of the
+    // tangential characteristic that meets it, p + (t^C - t-)/Us
+    if (!friction_->frictionless())
+    {
+        forAll(contact_, facei)
+        {
+            if (contact_[facei])
+            {
+                const vector& t = frictionTraction_[facei];
+                tC[facei] += t;
+                pC[facei] += t/s.Us[facei];
+            }
+        }
+    }
 }
 
 
@@ -536,6 +743,12 @@ void Foam::rigidWallFvPatchVectorField::autoMap(const fvPatchFieldMapper& m)
     contact.autoMap(m);
     contact_ = toBool(contact);
     stepContact_ = contact_;
+
+    if (!friction_->frictionless())
+    {
+        slip_.autoMap(m);
+        frictionTraction_.autoMap(m);
+    }
 }
 
 
@@ -554,6 +767,12 @@ void Foam::rigidWallFvPatchVectorField::rmap
     contact.rmap(toScalar(wptf.contact_), addr);
     contact_ = toBool(contact);
     stepContact_ = contact_;
+
+    if (!friction_->frictionless())
+    {
+        slip_.rmap(wptf.slip_, addr);
+        frictionTraction_.rmap(wptf.frictionTraction_, addr);
+    }
 }
 
 
@@ -564,6 +783,12 @@ void Foam::rigidWallFvPatchVectorField::write(Ostream& os) const
     os.writeEntry("normal", normal_);
     velocity_->writeData(os);
     toScalar(contact_).writeEntry("contact", os);
+
+    if (!friction_->frictionless())
+    {
+        friction_->write(os);
+        slip_.writeEntry(wallSlipEntry.name(), os);
+    }
 }
 
 
