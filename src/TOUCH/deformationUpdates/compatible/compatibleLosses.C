@@ -9,11 +9,13 @@ Description
     diagnostic (DebugSwitches { compatible 1; }): the energy each cell has
     lost since the start to the momentum upwinding of its faces (half of
     each interior face's to either cell) and of its boundary conditions,
-    upwindLoss [J], and each point to the point upwinding,
+    upwindLoss [J] (a condition's whole force on its cell: the work of a
+    prescribed traction or motion counts too, with its sign), and each
+    point to the point upwinding,
     pointUpwindLoss [J], written with the fields.  The first stage's power
-    times the step (a tally, not the scheme's quadrature); one material,
-    serial runs, no angular momentum preservation.  Nothing is allocated
-    or computed without the switch.
+    times the step (a tally, not the scheme's quadrature); serial runs of
+    one material (others say so in the log and tally nothing).  Nothing is
+    allocated or computed without the switch.
 
 \*---------------------------------------------------------------------------*/
 
@@ -24,8 +26,16 @@ Description
 void Foam::deformationUpdates::compatible::initLosses()
 {
     const fvMesh& mesh = faces_.mesh();
-    if (!debug || Pstream::parRun() || !law_.uniformMaterial())
+    if (!debug)
     {
+        return;
+    }
+
+    if (Pstream::parRun() || !law_.uniformMaterial())
+    {
+        WarningInFunction
+            << "DebugSwitches compatible: the losses are tallied in serial"
+            << " runs of one material only; none written" << endl;
         return;
     }
 
@@ -73,13 +83,21 @@ void Foam::deformationUpdates::compatible::tallyFaceLosses()
     const tensorField& gradp =
         faces_.reconstruction().gradp().primitiveField();
     scalarField& loss = upwindLoss_->primitiveFieldRef();
+    const vectorField& u = faces_.u().primitiveField();
     const scalar invRho = 1/law_.rho();
+
+    // As addFaceRates: with preservation the jumps less the body's spin
+    const bool spinning = magSqr(rigidSpin_) > 0;
 
     forAll(own, facei)
     {
         const label o = own[facei];
         const label n = nei[facei];
-        const vector jump(p[n] - p[o]);
+        vector jump(p[n] - p[o]);
+        if (spinning)
+        {
+            jump -= rigidSpin_ ^ ((X[n] + u[n]) - (X[o] + u[o]));
+        }
         const vector tC
         (
             riemannUpwindForce
@@ -93,8 +111,9 @@ void Foam::deformationUpdates::compatible::tallyFaceLosses()
             )
         );
 
-        // The power the face takes out, tC . (v_n - v_o) >= 0
-        const scalar half = 0.5*dt*invRho*(tC & jump);
+        // The power the face takes out, tC . (v_n - v_o) (>= 0 but for
+        // the spin's share with preservation)
+        const scalar half = 0.5*dt*invRho*(tC & (p[n] - p[o]));
         loss[o] += half;
         loss[n] += half;
     }
