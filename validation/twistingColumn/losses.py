@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Where the twisting column's upwindings take the energy out, by region.
 
-    /usr/bin/python3 validation/twistingColumn/losses.py N LABEL [KEY=VALUE ...] [Omega=W]
+    /usr/bin/python3 validation/twistingColumn/losses.py N LABEL [KEY=VALUE ...] [Omega=W] [nu=NU]
 
 A sources.py run (N x 6N x N, the tutorial's settings, KEY=VALUE TOUCH
 entries) with DebugSwitches { compatible 1; }, which writes the energy
@@ -13,7 +13,7 @@ the cells by the number of free (traction) faces they touch (0 interior,
 1 face, 2 edge, 3 corner), those touching the clamped base apart; the
 points likewise (interior, face, edge, corner of the free surface, base).
 Omega=W sets the initial spin's amplitude (rad/s; the tutorial's 105):
-a small one (1) is the linear regime.  FINDINGS.md, "Sources of the
+a small one (1) is the linear regime; nu=NU Poisson's ratio.  FINDINGS.md, "Sources of the
 error".
 """
 import json
@@ -66,8 +66,9 @@ def main():
     n, label = int(sys.argv[1]), sys.argv[2]
     touch = dict(kv.split("=", 1) for kv in sys.argv[3:])
     Omega = touch.pop("Omega", None)
+    nu = touch.pop("nu", None)
     case = os.path.join(HERE, "runs", "losses", "%s_n%d" % (label, n))
-    cases.prepare("twistingColumn", case, n=n, touch=touch,
+    cases.prepare("twistingColumn", case, n=n, touch=touch, nu=nu,
                   control={"endTime": 0.1, "writeInterval": 0.01})
     if Omega is not None:
         cases.initialise_twisting_column(case, Omega=float(Omega))
