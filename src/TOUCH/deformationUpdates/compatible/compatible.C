@@ -662,6 +662,8 @@ Foam::deformationUpdates::compatible::compatible
         faceFree_.set(patchi, new tensorField(n, tensor::I));
         faceVelocity_.set(patchi, new vectorField(n, Zero));
     }
+
+    initLosses();
 }
 
 
@@ -692,7 +694,19 @@ void Foam::deformationUpdates::compatible::rates
 
     addFaceRates(lmRate);
     addBoundaryFaceForces();
-    addBoundaryRate(stage, lmRate, torque);
+
+    const bool tally = upwindLoss_.valid() && stage == 1;
+    if (tally)
+    {
+        tallyFaceLosses();
+        const vectorField before(lmRate);
+        addBoundaryRate(stage, lmRate, torque);
+        tallyCellLosses(before, lmRate);
+    }
+    else
+    {
+        addBoundaryRate(stage, lmRate, torque);
+    }
 
     constraints_.finalise();
     completeNodalForces();
@@ -715,7 +729,16 @@ void Foam::deformationUpdates::compatible::rates
 
     if (pointUpwinding_ > 0)
     {
-        addPointUpwinding(pointV);
+        if (tally)
+        {
+            const vectorField before(pointV);
+            addPointUpwinding(pointV);
+            tallyPointLosses(before, pointV);
+        }
+        else
+        {
+            addPointUpwinding(pointV);
+        }
     }
 
     if (pointDisplacement_ && pointUpwinding_ > 0)
