@@ -11,6 +11,8 @@ License
 #include "Time.H"
 #include "Constant.H"
 #include "TableBase.H"
+#include "pointFields.H"
+#include "syncTools.H"
 
 // * * * * * * * * * * * * * * * Local Constants * * * * * * * * * * * * * * //
 
@@ -36,6 +38,16 @@ namespace Foam
         "0/U (or 0/lm) boundaryField, type rigidWall", "normal",
         "the wall's normal, from the wall into the solid (normalised)", "-",
         vector(0, 1, 0), entryLimits::any(), declaredEntry<vector>::required
+    );
+
+    static const declaredEntry<word> wallTouchingEntry
+    (
+        "0/U (or 0/lm) boundaryField, type rigidWall", "touching",
+        "when a face not in contact touches the wall: faceMean (the mean of"
+        " its points reaches it) or lowestFreePoint (a point of it that no"
+        " face in contact holds reaches it; curved bodies)",
+        "-", word("faceMean"),
+        entryLimits::oneOf({"faceMean", "lowestFreePoint"})
     );
 
     static const describedEntry wallContactEntry
@@ -252,6 +264,64 @@ Foam::vector Foam::rigidWallFvPatchVectorField::wallPoint
 }
 
 
+Foam::tmp<Foam::scalarField> Foam::rigidWallFvPatchVectorField::lowestFreeGaps
+(
+    const vector& wallPoint
+) const
+{
+    const polyMesh& mesh = patch().boundaryMesh().mesh();
+    const labelList& meshPoints = patch().patch().meshPoints();
+    const faceList& localFaces = patch().patch().localFaces();
+
+    // The points' displacement is the solver's pointD
+    const word pointDName("pointD");
+    if (!db().foundObject<pointVectorField>(pointDName))
+    {
+        FatalErrorInFunction
+            << "Patch " << patch().name() << ": 'touching lowestFreePoint'"
+            << " needs the point displacement field " << pointDName
+            << " (touchFoam's)" << exit(FatalError);
+    }
+    const vectorField& pointU =
+        db().lookupObject<pointVectorField>(pointDName).primitiveField();
+    const pointField& X = mesh.points();
+
+    // The points some face in contact holds, on any rank
+    boolList held(meshPoints.size(), false);
+    forAll(contact_, facei)
+    {
+        if (contact_[facei])
+        {
+            for (const label pointj : localFaces[facei])
+            {
+                held[pointj] = true;
+            }
+        }
+    }
+    syncTools::syncPointList(mesh, meshPoints, held, orEqOp<bool>(), false);
+
+    tmp<scalarField> tgaps(new scalarField(localFaces.size(), GREAT));
+    scalarField& gaps = tgaps.ref();
+    forAll(localFaces, facei)
+    {
+        for (const label pointj : localFaces[facei])
+        {
+            if (!held[pointj])
+            {
+                const label pointi = meshPoints[pointj];
+                gaps[facei] = min
+                (
+                    gaps[facei],
+                    ((X[pointi] + pointU[pointi]) - wallPoint) & normal_
+                );
+            }
+        }
+    }
+
+    return tgaps;
+}
+
+
 void Foam::rigidWallFvPatchVectorField::checkSide() const
 {
     if (returnReduce(patch().size(), sumOp<label>()) == 0)
@@ -303,6 +373,7 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     point_(Zero),
     normal_(Zero),
     velocity_(new Function1Types::Constant<vector>("velocity", Zero)),
+    lowestFreePoint_(false),
     contact_(p.size(), false),
     stepContact_(contact_),
     stepForce_(Zero),
@@ -321,11 +392,16 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     solidFluxFvPatchVectorField
     (
         p, iF, dict,
-        wordList({"point", "normal", "velocity", "velocityCoeffs", "contact"})
+        wordList
+        ({
+            "point", "normal", "velocity", "velocityCoeffs", "touching",
+            "contact"
+        })
     ),
     point_(wallPointEntry.read(dict)),
     normal_(readNormal(p, dict)),
     velocity_(readVelocity(p, dict)),
+    lowestFreePoint_(wallTouchingEntry.read(dict) == "lowestFreePoint"),
     contact_(readContact(p, dict)),
     stepContact_(contact_),
     stepForce_(Zero),
@@ -348,6 +424,7 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     point_(ptf.point_),
     normal_(ptf.normal_),
     velocity_(ptf.velocity_.clone()),
+    lowestFreePoint_(ptf.lowestFreePoint_),
     contact_(toBool(scalarField(toScalar(ptf.contact_), mapper))),
     stepContact_(contact_),
     stepForce_(Zero),
@@ -365,6 +442,7 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     point_(ptf.point_),
     normal_(ptf.normal_),
     velocity_(ptf.velocity_.clone()),
+    lowestFreePoint_(ptf.lowestFreePoint_),
     contact_(ptf.contact_),
     stepContact_(ptf.stepContact_),
     stepForce_(ptf.stepForce_),
@@ -383,6 +461,7 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     point_(ptf.point_),
     normal_(ptf.normal_),
     velocity_(ptf.velocity_.clone()),
+    lowestFreePoint_(ptf.lowestFreePoint_),
     contact_(ptf.contact_),
     stepContact_(ptf.stepContact_),
     stepForce_(ptf.stepForce_),
@@ -432,6 +511,13 @@ void Foam::rigidWallFvPatchVectorField::updateActiveSet
     ++nStages_;
     stageForce_ = Zero;
 
+    const scalarField lowest
+    (
+        lowestFreePoint_
+      ? lowestFreeGaps(wallPoint)
+      : tmp<scalarField>(new scalarField())
+    );
+
     forAll(contact_, facei)
     {
         // The normal traction of the wall solution: > 0 if the wall pushes
@@ -447,7 +533,10 @@ void Foam::rigidWallFvPatchVectorField::updateActiveSet
         }
         else
         {
-            const scalar gap = (s.xPoints[facei] - wallPoint) & normal_;
+            const scalar gap =
+                lowestFreePoint_
+              ? min(lowest[facei], (s.xPoints[facei] - wallPoint) & normal_)
+              : (s.xPoints[facei] - wallPoint) & normal_;
             contact_[facei] =
                 compressive
              && gap <= touchingTolerance*sqrt(magSf[facei]);
@@ -563,6 +652,10 @@ void Foam::rigidWallFvPatchVectorField::write(Ostream& os) const
     os.writeEntry("point", point_);
     os.writeEntry("normal", normal_);
     velocity_->writeData(os);
+    if (lowestFreePoint_)
+    {
+        os.writeEntry(wallTouchingEntry.name(), word("lowestFreePoint"));
+    }
     toScalar(contact_).writeEntry("contact", os);
 }
 
