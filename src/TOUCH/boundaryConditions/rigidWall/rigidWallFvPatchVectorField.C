@@ -425,7 +425,11 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     normal_(ptf.normal_),
     velocity_(ptf.velocity_.clone()),
     lowestFreePoint_(ptf.lowestFreePoint_),
-    contact_(toBool(scalarField(toScalar(ptf.contact_), mapper))),
+    // Faces the mapper does not reach (reconstructPar builds the patch
+    // from one processor's part, the rest comes by rmap) are not in
+    // contact, rather than left unset: an unset value compared in toBool
+    // stopped reconstructPar with a floating point exception
+    contact_(toBool(scalarField(toScalar(ptf.contact_), mapper, scalar(0)))),
     stepContact_(contact_),
     stepForce_(Zero),
     nStages_(0),
