@@ -12,6 +12,8 @@ License
 #include "Constant.H"
 #include "TableBase.H"
 #include "fvMesh.H"
+#include "pointFields.H"
+#include "syncTools.H"
 
 // * * * * * * * * * * * * * * * Local Constants * * * * * * * * * * * * * * //
 
@@ -37,6 +39,16 @@ namespace Foam
         "0/U (or 0/lm) boundaryField, type rigidWall", "normal",
         "the wall's normal, from the wall into the solid (normalised)", "-",
         vector(0, 1, 0), entryLimits::any(), declaredEntry<vector>::required
+    );
+
+    static const declaredEntry<word> wallTouchingEntry
+    (
+        "0/U (or 0/lm) boundaryField, type rigidWall", "touching",
+        "when a face not in contact touches the wall: faceMean (the mean of"
+        " its points reaches it) or lowestFreePoint (a point of it that no"
+        " face in contact holds reaches it; curved bodies)",
+        "-", word("faceMean"),
+        entryLimits::oneOf({"faceMean", "lowestFreePoint"})
     );
 
     static const describedEntry wallContactEntry
@@ -403,6 +415,64 @@ Foam::vector Foam::rigidWallFvPatchVectorField::wallPoint
 }
 
 
+Foam::tmp<Foam::scalarField> Foam::rigidWallFvPatchVectorField::lowestFreeGaps
+(
+    const vector& wallPoint
+) const
+{
+    const polyMesh& mesh = patch().boundaryMesh().mesh();
+    const labelList& meshPoints = patch().patch().meshPoints();
+    const faceList& localFaces = patch().patch().localFaces();
+
+    // The points' displacement is the solver's pointD
+    const word pointDName("pointD");
+    if (!db().foundObject<pointVectorField>(pointDName))
+    {
+        FatalErrorInFunction
+            << "Patch " << patch().name() << ": 'touching lowestFreePoint'"
+            << " needs the point displacement field " << pointDName
+            << " (touchFoam's)" << exit(FatalError);
+    }
+    const vectorField& pointU =
+        db().lookupObject<pointVectorField>(pointDName).primitiveField();
+    const pointField& X = mesh.points();
+
+    // The points some face in contact holds, on any rank
+    boolList held(meshPoints.size(), false);
+    forAll(contact_, facei)
+    {
+        if (contact_[facei])
+        {
+            for (const label pointj : localFaces[facei])
+            {
+                held[pointj] = true;
+            }
+        }
+    }
+    syncTools::syncPointList(mesh, meshPoints, held, orEqOp<bool>(), false);
+
+    tmp<scalarField> tgaps(new scalarField(localFaces.size(), GREAT));
+    scalarField& gaps = tgaps.ref();
+    forAll(localFaces, facei)
+    {
+        for (const label pointj : localFaces[facei])
+        {
+            if (!held[pointj])
+            {
+                const label pointi = meshPoints[pointj];
+                gaps[facei] = min
+                (
+                    gaps[facei],
+                    ((X[pointi] + pointU[pointi]) - wallPoint) & normal_
+                );
+            }
+        }
+    }
+
+    return tgaps;
+}
+
+
 void Foam::rigidWallFvPatchVectorField::checkSide() const
 {
     if (returnReduce(patch().size(), sumOp<label>()) == 0)
@@ -454,6 +524,7 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     point_(Zero),
     normal_(Zero),
     velocity_(new Function1Types::Constant<vector>("velocity", Zero)),
+    lowestFreePoint_(false),
     contact_(p.size(), false),
     stepContact_(contact_),
     stepForce_(Zero),
@@ -478,13 +549,14 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
         p, iF, dict,
         wordList
         ({
-            "point", "normal", "velocity", "velocityCoeffs", "contact",
-            "friction", "slip"
+            "point", "normal", "velocity", "velocityCoeffs", "touching",
+            "contact", "friction", "slip"
         })
     ),
     point_(wallPointEntry.read(dict)),
     normal_(readNormal(p, dict)),
     velocity_(readVelocity(p, dict)),
+    lowestFreePoint_(wallTouchingEntry.read(dict) == "lowestFreePoint"),
     contact_(readContact(p, dict)),
     stepContact_(contact_),
     stepForce_(Zero),
@@ -511,7 +583,12 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     point_(ptf.point_),
     normal_(ptf.normal_),
     velocity_(ptf.velocity_.clone()),
-    contact_(toBool(scalarField(toScalar(ptf.contact_), mapper))),
+    lowestFreePoint_(ptf.lowestFreePoint_),
+    // Faces the mapper does not reach (reconstructPar builds the patch
+    // from one processor's part, the rest comes by rmap) are not in
+    // contact, rather than left unset: an unset value compared in toBool
+    // stopped reconstructPar with a floating point exception
+    contact_(toBool(scalarField(toScalar(ptf.contact_), mapper, scalar(0)))),
     stepContact_(contact_),
     stepForce_(Zero),
     nStages_(0),
@@ -540,6 +617,7 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     point_(ptf.point_),
     normal_(ptf.normal_),
     velocity_(ptf.velocity_.clone()),
+    lowestFreePoint_(ptf.lowestFreePoint_),
     contact_(ptf.contact_),
     stepContact_(ptf.stepContact_),
     stepForce_(ptf.stepForce_),
@@ -562,6 +640,7 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     point_(ptf.point_),
     normal_(ptf.normal_),
     velocity_(ptf.velocity_.clone()),
+    lowestFreePoint_(ptf.lowestFreePoint_),
     contact_(ptf.contact_),
     stepContact_(ptf.stepContact_),
     stepForce_(ptf.stepForce_),
@@ -615,6 +694,13 @@ void Foam::rigidWallFvPatchVectorField::updateActiveSet
     ++nStages_;
     stageForce_ = Zero;
 
+    const scalarField lowest
+    (
+        lowestFreePoint_
+      ? lowestFreeGaps(wallPoint)
+      : tmp<scalarField>(new scalarField())
+    );
+
     forAll(contact_, facei)
     {
         // The normal traction of the wall solution: > 0 if the wall pushes
@@ -630,7 +716,10 @@ void Foam::rigidWallFvPatchVectorField::updateActiveSet
         }
         else
         {
-            const scalar gap = (s.xPoints[facei] - wallPoint) & normal_;
+            const scalar gap =
+                lowestFreePoint_
+              ? min(lowest[facei], (s.xPoints[facei] - wallPoint) & normal_)
+              : (s.xPoints[facei] - wallPoint) & normal_;
             contact_[facei] =
                 compressive
              && gap <= touchingTolerance*sqrt(magSf[facei]);
@@ -782,6 +871,10 @@ void Foam::rigidWallFvPatchVectorField::write(Ostream& os) const
     os.writeEntry("point", point_);
     os.writeEntry("normal", normal_);
     velocity_->writeData(os);
+    if (lowestFreePoint_)
+    {
+        os.writeEntry(wallTouchingEntry.name(), word("lowestFreePoint"));
+    }
     toScalar(contact_).writeEntry("contact", os);
 
     if (!friction_->frictionless())

@@ -538,6 +538,24 @@ void Foam::deformationUpdates::compatible::addBoundaryRate
             }
             faceForce_[patchi] = faceForce;
 
+            // The torque of a wall is that of the force it applies: the
+            // faces' part above and the constraint's reaction at the
+            // points (reportWallForces), not the flux's central traction
+            // at the faces, whose total differs from the reaction by up
+            // to half of it on a curved body.  The difference turned with
+            // the lever arm of the body's drift along the wall: a ring
+            // sliding on it at 0.85 of its falling speed spun up to 0.17
+            // |p| R_outer and left the wall 4 % early
+            // (validation/ringImpact/FINDINGS.md)
+            if (pointDisplacement_ && condition.reportsForce())
+            {
+                forAll(faceCells, i)
+                {
+                    const tensor fixed(tensor::I - free[i]);
+                    torque -= state.x[i] ^ ((fixed & state.t[i])*magSf[i]);
+                }
+            }
+
             // The reconstructed traction against the condition's
             if (pointUpwinding_ > 0)
             {
@@ -710,7 +728,7 @@ void Foam::deformationUpdates::compatible::rates
 
     constraints_.finalise();
     completeNodalForces();
-    reportWallForces();
+    reportWallForces(torque);
 
     // Point velocities v_a = Pi_a (A v)_a + b_a, and the upwinding of the
     // nodal forces

@@ -16,7 +16,10 @@ Description
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
-void Foam::deformationUpdates::compatible::reportWallForces()
+void Foam::deformationUpdates::compatible::reportWallForces
+(
+    vector& torque
+)
 {
     const fvMesh& mesh = faces_.mesh();
 
@@ -89,11 +92,22 @@ void Foam::deformationUpdates::compatible::reportWallForces()
             {
                 const label pointi = meshPoints[j];
                 const tensor fixed(tensor::I - free[fixingFace[j]]);
-                reaction +=
+                const vector share
+                (
                     (
                         fixed
                       & constraints_.reaction(pointi, pointForce_[pointi])
-                    )/pointMarks_[pointi];
+                    )/pointMarks_[pointi]
+                );
+                reaction += share;
+
+                // At the point where it acts (the stage's positions)
+                if (pointDisplacement_)
+                {
+                    torque +=
+                        (mesh.points()[pointi] + (*pointDisplacement_)[pointi])
+                      ^ share;
+                }
             }
         }
 
