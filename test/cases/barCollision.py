@@ -6,8 +6,8 @@ the closed forms of the shared CONTACT.md section 4.
 
 Copies of tutorials/barCollision (bars along x in uniaxial strain,
 rho0 = 1400, c = 1000 m/s, Z = 1.4e6 Pa s/m; bodyContact on the two ends
-that meet, FUpdate plain, limitedLinear, RK2 at CFL 0.3), 50 cells per
-metre:
+that meet, limitedLinear, RK2 at CFL 0.3), 50 cells per metre, each
+with FUpdate compatible (the default) and plain:
 
   equal       two 1 m bars at +-0.1 m/s: contact stress Z v on the
               plateau (0.2 to 0.8 of 2L/c) within 1 %, release at 2L/c
@@ -25,13 +25,12 @@ metre:
               energy never grows (1e-12 E0 per step), no contact pulls
               (most tensile traction of a face in contact < 0) and
               the penetration below 5 % of a face's size;
-  parallel    equal, 20 cells per metre and 2 x 2 across: serial against
+  parallel    equal with FUpdate plain, 20 cells per metre and 2 x 2
+              across: serial against
               2 ranks cut across the bars (simple (1 2 1): each contact
               patch split between the ranks) and metis, every written
               lm, F, sigma to 1e-12 of its magnitude at an O(1)
               deformation (parallelEqualsSerial's floors);
-  compatible  a bodyContact case with FUpdate compatible is refused with
-              the valid updates named.
 Work folders: test/runs/barCollision/.
 """
 
@@ -58,10 +57,17 @@ N = 50
 #: of these bars' strains of 1e-4, and a decomposition error is O(1)
 FLOOR = {"lm": 1400.0 * 1000.0, "F": 1.0, "sigma": 1.4e9}
 
+#: The update of the parallel comparison: with compatible, a contact patch
+#: cut between ranks (2 x 2 faces) is off the serial run by 2.5e-8 of
+#: these floors (validation/barCollision/FINDINGS.md, not resolved)
+PARALLEL_UPDATE = "plain"
 
-def tutorial_case(root, name, args):
+
+def tutorial_case(root, name, args, update="compatible"):
     case = os.path.join(root, name)
     shutil.copytree(run.tutorial_dir("barCollision"), case)
+    with open(os.path.join(case, "system", "solverOptions"), "w") as f:
+        f.write("FUpdate %s;\n" % update)
     run.run(["./Allrun"] + args, case, name="Allrun",
             timeout=testing.RUN_TIMEOUT)
     return case
@@ -98,11 +104,13 @@ def plateau(name, r, failures):
                            100 * r["plateauError"]))
 
 
-def equal(root, failures):
-    collision = tutorial_case(root, "equal", ["-n", str(N)])
-    wall = tutorial_case(root, "wall", ["-n", str(N), "-variant", "wall"])
+def equal(root, failures, update):
+    collision = tutorial_case(root, "equal-" + update, ["-n", str(N)],
+                              update)
+    wall = tutorial_case(root, "wall-" + update,
+                         ["-n", str(N), "-variant", "wall"], update)
     r = analyse(collision)
-    lines = ["equal: " + plateau("equal", r, failures)]
+    lines = ["equal (%s): " % update + plateau("equal", r, failures)]
 
     exact = r["contactTimeExact"]
     if abs(r["contactTime"] - exact) > r["step"] + 0.01 * exact:
@@ -135,10 +143,10 @@ def equal(root, failures):
     return ", ".join(lines)
 
 
-def unequal(root, failures):
-    r = analyse(tutorial_case(root, "unequal",
-                              ["-n", str(N), "-variant", "unequal"]))
-    line = "unequal: " + plateau("unequal", r, failures)
+def unequal(root, failures, update):
+    r = analyse(tutorial_case(root, "unequal-" + update,
+                              ["-n", str(N), "-variant", "unequal"], update))
+    line = "unequal (%s): " % update + plateau("unequal", r, failures)
     if abs(r["bar1End"]) > 0.01 or abs(r["bar2End"] - 1) > 0.01:
         failures.append("unequal: momenta at the end %.5f, %.5f of bar1's"
                         " initial" % (r["bar1End"], r["bar2End"]))
@@ -147,19 +155,21 @@ def unequal(root, failures):
             + common("unequal", r, failures))
 
 
-def bimaterial(root, failures):
-    r = analyse(tutorial_case(root, "bimaterial",
-                              ["-n", str(N), "-variant", "bimaterial"]))
+def bimaterial(root, failures, update):
+    r = analyse(tutorial_case(root, "bimaterial-" + update,
+                              ["-n", str(N), "-variant", "bimaterial"],
+                              update))
     if r["Z2"] / r["Z1"] < 2 - 1e-12:
         failures.append("bimaterial: impedance ratio %.3g"
                         % (r["Z2"] / r["Z1"]))
-    return ("bimaterial (Z2/Z1 %.2g): " % (r["Z2"] / r["Z1"])
+    return ("bimaterial (%s, Z2/Z1 %.2g): " % (update, r["Z2"] / r["Z1"])
             + plateau("bimaterial", r, failures) + ", "
             + common("bimaterial", r, failures))
 
 
 def parallel(root, failures):
-    serial = tutorial_case(root, "serial", ["-n", "20", "-section", "2"])
+    serial = tutorial_case(root, "serial", ["-n", "20", "-section", "2"],
+                           PARALLEL_UPDATE)
     fields = ("lm", "F", "sigma")
     folders = run.time_dirs(serial)
     times = [folders[t] for t in sorted(folders) if t > 0]
@@ -200,34 +210,18 @@ def parallel(root, failures):
         if d > 1e-12:
             failures.append("parallel %s: %.2e off the serial fields"
                             % (method, d))
-    return ("parallel (2 ranks, %d times): simple (1 2 1), contact"
+    return ("parallel (%s, 2 ranks, %d times): simple (1 2 1), contact"
             " patches cut, %.1e; metis %.1e"
-            % (len(times), worst["simple"], worst["metis"]))
-
-
-def compatible(root, failures):
-    case = os.path.join(root, "compatible")
-    shutil.copytree(run.tutorial_dir("barCollision"), case)
-    with open(os.path.join(case, "system", "solverOptions"), "w") as f:
-        f.write("FUpdate compatible;\n")
-    refused = False
-    try:
-        run.run(["./Allrun", "-n", "10"], case, name="Allrun")
-    except run.RunError:
-        with open(os.path.join(case, "log.touchFoam")) as f:
-            text = f.read()
-        refused = "(plain constrained)" in text
-    if not refused:
-        failures.append("compatible: FUpdate compatible with bodyContact"
-                        " was not refused naming the valid updates")
-    return "FUpdate compatible refused: %s" % refused
+            % (PARALLEL_UPDATE, len(times), worst["simple"], worst["metis"]))
 
 
 def body():
     root = testing.work_dir(NAME)
     lines, failures = [], []
-    for check in (equal, unequal, bimaterial, parallel, compatible):
-        lines.append(check(root, failures))
+    for update in ("compatible", "plain"):
+        for check in (equal, unequal, bimaterial):
+            lines.append(check(root, failures, update))
+    lines.append(parallel(root, failures))
     return testing.verdict(lines, failures)
 
 

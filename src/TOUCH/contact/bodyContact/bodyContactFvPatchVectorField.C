@@ -67,7 +67,12 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     solidFluxFvPatchVectorField(p, iF),
     patches_(),
     contact_(p.size(), false),
-    traction_(p.size(), Zero)
+    traction_(p.size(), Zero),
+    touching_(p.size(), false),
+    normal_(p.size(), Zero),
+    contactVelocity_(p.size(), Zero),
+    stageForce_(Zero),
+    pointConstrained_(false)
 {}
 
 
@@ -91,7 +96,12 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
         dict.getOrDefault<wordList>(bodyContactPatchesEntry.name(), wordList())
     ),
     contact_(readContact(p, dict)),
-    traction_(p.size(), Zero)
+    traction_(p.size(), Zero),
+    touching_(p.size(), false),
+    normal_(p.size(), Zero),
+    contactVelocity_(p.size(), Zero),
+    stageForce_(Zero),
+    pointConstrained_(false)
 {}
 
 
@@ -106,7 +116,12 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     solidFluxFvPatchVectorField(ptf, p, iF, mapper),
     patches_(ptf.patches_),
     contact_(p.size(), false),
-    traction_(p.size(), Zero)
+    traction_(p.size(), Zero),
+    touching_(p.size(), false),
+    normal_(p.size(), Zero),
+    contactVelocity_(p.size(), Zero),
+    stageForce_(Zero),
+    pointConstrained_(false)
 {
     scalarField contact(ptf.contact_.size());
     forAll(contact, facei)
@@ -129,7 +144,12 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     solidFluxFvPatchVectorField(ptf),
     patches_(ptf.patches_),
     contact_(ptf.contact_),
-    traction_(ptf.traction_)
+    traction_(ptf.traction_),
+    touching_(ptf.touching_),
+    normal_(ptf.normal_),
+    contactVelocity_(ptf.contactVelocity_),
+    stageForce_(ptf.stageForce_),
+    pointConstrained_(ptf.pointConstrained_)
 {}
 
 
@@ -142,7 +162,12 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     solidFluxFvPatchVectorField(ptf, iF),
     patches_(ptf.patches_),
     contact_(ptf.contact_),
-    traction_(ptf.traction_)
+    traction_(ptf.traction_),
+    touching_(ptf.touching_),
+    normal_(ptf.normal_),
+    contactVelocity_(ptf.contactVelocity_),
+    stageForce_(ptf.stageForce_),
+    pointConstrained_(ptf.pointConstrained_)
 {}
 
 
@@ -156,6 +181,29 @@ void Foam::bodyContactFvPatchVectorField::flux
 ) const
 {
     tractionFlux(s, traction_, pC, tC);
+
+    if (!pointConstrained_)
+    {
+        return;
+    }
+
+    // Along the pair's normal, the rigid wall's flux with the contact
+    // velocity: with the same normal velocity of the points, two equal
+    // bars meet as one bar meets a wall (the update balances the forces)
+    forAll(touching_, facei)
+    {
+        if (touching_[facei])
+        {
+            const tensor nn(sqr(normal_[facei]));
+            const tensor tangential(tensor::I - nn);
+            const vector momentum(s.rho[facei]*contactVelocity_[facei]);
+
+            pC[facei] = (tangential & pC[facei]) + (nn & momentum);
+            tC[facei] =
+                (tangential & tC[facei])
+              + (nn & (s.t[facei] - s.Up[facei]*(s.p[facei] - momentum)));
+        }
+    }
 }
 
 
@@ -166,10 +214,19 @@ void Foam::bodyContactFvPatchVectorField::constraint
     vectorField& velocity
 ) const
 {
-    // The contact traction is a prescribed traction of the stage: the
-    // momentum it gives is exactly the one the partner loses
-    free = tensor::I;
-    velocity = Zero;
+    forAll(touching_, facei)
+    {
+        if (touching_[facei])
+        {
+            free[facei] = tensor::I - sqr(normal_[facei]);
+            velocity[facei] = contactVelocity_[facei];
+        }
+        else
+        {
+            free[facei] = tensor::I;
+            velocity[facei] = Zero;
+        }
+    }
 }
 
 
@@ -191,6 +248,12 @@ void Foam::bodyContactFvPatchVectorField::autoMap(const fvPatchFieldMapper& m)
     }
     traction_.setSize(contact.size());
     traction_ = Zero;
+    touching_.setSize(contact.size());
+    touching_ = false;
+    normal_.setSize(contact.size());
+    normal_ = Zero;
+    contactVelocity_.setSize(contact.size());
+    contactVelocity_ = Zero;
 }
 
 

@@ -6,6 +6,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "compatible.H"
+#include "contactSurfaces.H"
+#include "bodyContactFvPatchVectorField.H"
 #include "declaredEntry.H"
 #include "modelCoeffs.H"
 #include "syncTools.H"
@@ -653,7 +655,8 @@ Foam::deformationUpdates::compatible::compatible
     faceIncrementForce_(pointUpwinding_ > 0 ? faces.mesh().nFaces() : 0),
     upwindNormal_(0),
     upwindTangential_(0),
-    upwindInline_(riemann.upwindCoefficients(upwindNormal_, upwindTangential_))
+    upwindInline_(riemann.upwindCoefficients(upwindNormal_, upwindTangential_)),
+    hasContact_(contactSurfaces::any(faces.lm()))
 {
     forAll(faces.mesh().boundary(), patchi)
     {
@@ -662,26 +665,14 @@ Foam::deformationUpdates::compatible::compatible
         faceFree_.set(patchi, new tensorField(n, tensor::I));
         faceVelocity_.set(patchi, new vectorField(n, Zero));
 
-        // Contact between bodies moves its faces' points with the cells
-        // here, not with the contact velocity: two bars at +-0.1 m/s
-        // (tutorials/barCollision, 50 cells a bar) met at 0.78 Z v, their
-        // ends sinking into each other at 0.46 v; the contact's point
-        // constraint is not written for this update
-        const fvPatchVectorField& pf = faces.lm().boundaryField()[patchi];
-        if
-        (
-            isA<solidFluxFvPatchVectorField>(pf)
-         && refCast<const solidFluxFvPatchVectorField>(pf).contactSurface()
-        )
+        // Contact between bodies: its faces' points keep the contact
+        // velocity along the pair's normal (with the traction alone they
+        // moved with the cells: two bars at +-0.1 m/s, 50 cells a bar, met
+        // at 0.77 Z v, their ends sinking into each other at 0.46 v)
+        fvPatchVectorField& pf = faces.lm().boundaryFieldRef()[patchi];
+        if (isA<bodyContactFvPatchVectorField>(pf))
         {
-            FatalErrorInFunction
-                << "Patch " << pf.patch().name() << " of "
-                << faces.lm().name() << " is a contact surface ("
-                << pf.type() << "), which the " << typeName
-                << " F update does not support yet" << nl
-                << "Valid FUpdate in system/fvSolution TOUCH with contact"
-                << " between bodies: (plain constrained)" << nl
-                << exit(FatalError);
+            refCast<bodyContactFvPatchVectorField>(pf).setPointConstrained();
         }
     }
 }
@@ -719,6 +710,7 @@ void Foam::deformationUpdates::compatible::rates
     constraints_.finalise();
     completeNodalForces();
     reportWallForces();
+    balanceContactForces(lmRate);
 
     // Point velocities v_a = Pi_a (A v)_a + b_a, and the upwinding of the
     // nodal forces
