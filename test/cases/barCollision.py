@@ -25,6 +25,9 @@ with FUpdate compatible (the default) and plain:
               energy never grows (1e-12 E0 per step), no contact pulls
               (most tensile traction of a face in contact < 0) and
               the penetration below 5 % of a face's size;
+  restart     equal (compatible) stopped at 1 ms in contact and
+              continued: lm, F, sigma at 2 and 3 ms those of the
+              uninterrupted run to 1e-12 (floors below);
   parallel    equal with FUpdate plain, 20 cells per metre and 2 x 2
               across: serial against
               2 ranks cut across the bars (simple (1 2 1): each contact
@@ -35,6 +38,7 @@ Work folders: test/runs/barCollision/.
 """
 
 import os
+import re
 import shutil
 import sys
 
@@ -215,12 +219,46 @@ def parallel(root, failures):
             % (PARALLEL_UPDATE, len(times), worst["simple"], worst["metis"]))
 
 
+def restart(root, failures):
+    """equal (compatible) stopped at 1 ms, in contact, and continued to the
+    end, against the uninterrupted run of equal()."""
+    whole = os.path.join(root, "equal-compatible")
+    case = os.path.join(root, "restart")
+    shutil.copytree(run.tutorial_dir("barCollision"), case)
+    run.foam_set(case, "system/controlDict", "endTime", "1e-3")
+    run.run(["./Allrun", "-n", str(N)], case, name="Allrun",
+            timeout=testing.RUN_TIMEOUT)
+    run.foam_set(case, "system/controlDict", "endTime", "3e-3")
+    run.run(["touchFoam"], case, name="touchFoam.restart",
+            timeout=testing.RUN_TIMEOUT)
+    n_cells = 2 * N
+    worst = 0.0
+    for name in ("0.002", "0.003"):
+        for field in ("lm", "F", "sigma"):
+            a = read_field(os.path.join(case, name, field)).internal(n_cells)
+            b = read_field(os.path.join(whole, name, field)).internal(
+                n_cells)
+            worst = max(worst, np.max(np.abs(a - b))
+                        / max(np.max(np.abs(b)), FLOOR[field]))
+    with open(os.path.join(case, "0.001", "lm")) as f:
+        text = f.read()
+    start = text.find("bar1End")
+    in_contact = re.search(r"contact\s+uniform 1;",
+                           text[start:text.find("}", start)]) is not None
+    if not in_contact or worst > 1e-12:
+        failures.append("restart: %.2e off the uninterrupted run (active"
+                        " set written at 1 ms: %s)" % (worst, in_contact))
+    return ("restart at 1 ms (in contact: %s): %.1e off the uninterrupted"
+            " run at 2 and 3 ms" % (in_contact, worst))
+
+
 def body():
     root = testing.work_dir(NAME)
     lines, failures = [], []
     for update in ("compatible", "plain"):
         for check in (equal, unequal, bimaterial):
             lines.append(check(root, failures, update))
+    lines.append(restart(root, failures))
     lines.append(parallel(root, failures))
     return testing.verdict(lines, failures)
 
