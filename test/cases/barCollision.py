@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Contact between deformable bodies: two bars meeting end to end against
-the closed forms of the shared CONTACT.md section 4.
+the closed forms of 1D elastic waves.
 
     /usr/bin/python3 test/cases/barCollision.py
 

@@ -3,7 +3,7 @@
 
     ./results.py            (in a finished case)
 
-Shared CONTACT.md section 4: contact stress Z1 Z2 v/(Z1 + Z2) (Z v for two
+1D elastic waves: contact stress Z1 Z2 v/(Z1 + Z2) (Z v for two
 equal bars at +-v), contact time 2 L1/c, the bars' momenta afterwards.
 """
 

@@ -1,6 +1,5 @@
 """Contact between bodies: the contact function's rows and the bar
-collision's closed forms (tutorials/barCollision, shared CONTACT.md
-section 4).
+collision's closed forms of 1D elastic waves (tutorials/barCollision).
 
 postProcessing/contact/<startTime>/contact.dat holds, at the first
 Runge-Kutta stage of every step,
