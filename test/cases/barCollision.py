@@ -28,6 +28,9 @@ with FUpdate compatible (the default) and plain:
   restart     equal (compatible) stopped at 1 ms in contact and
               continued: lm, F, sigma at 2 and 3 ms those of the
               uninterrupted run to 1e-12 (floors below);
+  nonmatching equal (compatible), bar1 2 x 2 and bar2 3 x 3 faces
+              across: the run warns that the faces do not match (the
+              matching equal case does not), contact stress within 1 %;
   parallel    equal with FUpdate plain, 20 cells per metre and 2 x 2
               across: serial against
               2 ranks cut across the bars (simple (1 2 1): each contact
@@ -252,6 +255,29 @@ def restart(root, failures):
             " run at 2 and 3 ms" % (in_contact, worst))
 
 
+def nonmatching(root, failures):
+    """bar1 2 x 2 faces across, bar2 3 x 3 (compatible): the warning, and
+    the contact stress; the matching equal case without the warning."""
+    case = tutorial_case(root, "nonmatching",
+                         ["-n", "30", "-section", "2", "-section2", "3"])
+    r = analyse(case)
+    with open(os.path.join(case, "log.touchFoam")) as f:
+        warned = "do not match" in f.read()
+    with open(os.path.join(root, "equal-compatible", "log.touchFoam")) as f:
+        warned_matching = "do not match" in f.read()
+    if not warned or warned_matching:
+        failures.append("nonmatching: warned %s, matching warned %s"
+                        % (warned, warned_matching))
+    if r["plateauError"] > 0.01:
+        failures.append("nonmatching: contact stress off by %.3g %%"
+                        % (100 * r["plateauError"]))
+    return ("nonmatching 2 x 2 / 3 x 3 faces (compatible): warned %s"
+            " (matching: %s), contact stress within %.2g %%, momentum"
+            " drift %.1e |p0| (not asserted: lumped forces)"
+            % (warned, warned_matching, 100 * r["plateauError"],
+               r["momentumDrift"]))
+
+
 def body():
     root = testing.work_dir(NAME)
     lines, failures = [], []
@@ -259,6 +285,7 @@ def body():
         for check in (equal, unequal, bimaterial):
             lines.append(check(root, failures, update))
     lines.append(restart(root, failures))
+    lines.append(nonmatching(root, failures))
     lines.append(parallel(root, failures))
     return testing.verdict(lines, failures)
 

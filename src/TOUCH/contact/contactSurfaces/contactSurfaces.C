@@ -269,6 +269,44 @@ Foam::label Foam::contactSurfaces::partner
 }
 
 
+void Foam::contactSurfaces::checkMatching(const labelList& partners)
+{
+    labelList all(partners);
+    if (Pstream::parRun())
+    {
+        Pstream::listCombineGather(all, maxEqOp<label>());
+        Pstream::listCombineScatter(all);
+    }
+
+    label nPaired = 0;
+    label nOneWay = 0;
+    forAll(all, g)
+    {
+        if (all[g] >= 0)
+        {
+            ++nPaired;
+            nOneWay += all[all[g]] != g;
+        }
+    }
+
+    if (nPaired == 0)
+    {
+        return;
+    }
+    matchChecked_ = true;
+
+    if (nOneWay)
+    {
+        WarningInFunction
+            << nOneWay << " of " << nPaired << " contact faces with a"
+            << " partner are not their partner's partner: the faces that"
+            << " meet do not match.  Their forces are exchanged exactly but"
+            << " lumped by half areas, not by overlap areas (with FUpdate"
+            << " plain such a contact can be unstable)" << endl;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::contactSurfaces::contactSurfaces
@@ -283,7 +321,8 @@ Foam::contactSurfaces::contactSurfaces
     start_(patches_.size() + 1, 0),
     globalFaces_(nContactFaces(mesh, patches_)),
     searchSize_(0),
-    mostTensile_(-GREAT)
+    mostTensile_(-GREAT),
+    matchChecked_(false)
 {
     setAllowed(lm);
 
@@ -389,6 +428,8 @@ void Foam::contactSurfaces::update
     vectorField normalSum(x_.size(), Zero);
     vectorField velocitySum(x_.size(), Zero);
 
+    labelList partners(matchChecked_ ? 0 : x_.size(), -1);
+
     label nActive = 0;
     scalar normalForce = 0;
     scalar area = 0;
@@ -408,6 +449,11 @@ void Foam::contactSurfaces::update
             const label k = start_[s] + i;
             const label gi = offset + k;
             const label gj = partner(k, gi);
+
+            if (!matchChecked_)
+            {
+                partners[gi] = gj;
+            }
 
             if (gj < 0)
             {
@@ -487,6 +533,11 @@ void Foam::contactSurfaces::update
             penetration = max(penetration, -gap);
             mostTensile_ = max(mostTensile_, tN);
         }
+    }
+
+    if (!matchChecked_)
+    {
+        checkMatching(partners);
     }
 
     if (Pstream::parRun())
