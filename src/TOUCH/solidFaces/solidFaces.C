@@ -7,6 +7,7 @@ License
 
 #include "solidFaces.H"
 #include "mechanicalLaw.H"
+#include "contactSurfaces.H"
 
 // * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -118,6 +119,32 @@ void Foam::solidFaces::fillMaterial(const mechanicalLaw& law)
 }
 
 
+void Foam::solidFaces::updateContact(const label stage)
+{
+    const labelList& patches = contact_->patches();
+    PtrList<solidFluxFvPatchVectorField::interiorState> states(patches.size());
+
+    forAll(patches, s)
+    {
+        const label patchi = patches[s];
+        fillInteriorState(patchi);
+
+        states.set
+        (
+            s,
+            new solidFluxFvPatchVectorField::interiorState
+            {
+                pM_[patchi], tM_[patchi], nM_[patchi], xM_[patchi],
+                xPointsM_[patchi], rhoM_[patchi], UpM_[patchi], UsM_[patchi],
+                stage, stageTime_
+            }
+        );
+    }
+
+    contact_->update(states, F_, lm_, stage, stageTime_);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::solidFaces::solidFaces
@@ -174,7 +201,17 @@ Foam::solidFaces::solidFaces
             NM_[patchi] = patch.nf();
         }
     }
+
+    // Nothing for a mesh without contact surfaces
+    if (contactSurfaces::any(lm))
+    {
+        contact_.reset(new contactSurfaces(mesh, lm));
+    }
 }
+
+
+Foam::solidFaces::~solidFaces()
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -88,6 +88,12 @@ void Foam::solidFaces::forAllSolidPatches
         fillMaterial(law);
     }
 
+    // The contact needs every contact patch's state before any flux
+    if (contact_.valid())
+    {
+        updateContact(stage);
+    }
+
     forAll(mesh_.boundary(), patchi)
     {
         const fvPatch& patch = mesh_.boundary()[patchi];

@@ -6,6 +6,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "compatible.H"
+#include "contactSurfaces.H"
+#include "bodyContactFvPatchVectorField.H"
 #include "declaredEntry.H"
 #include "modelCoeffs.H"
 #include "syncTools.H"
@@ -671,7 +673,8 @@ Foam::deformationUpdates::compatible::compatible
     faceIncrementForce_(pointUpwinding_ > 0 ? faces.mesh().nFaces() : 0),
     upwindNormal_(0),
     upwindTangential_(0),
-    upwindInline_(riemann.upwindCoefficients(upwindNormal_, upwindTangential_))
+    upwindInline_(riemann.upwindCoefficients(upwindNormal_, upwindTangential_)),
+    hasContact_(contactSurfaces::any(faces.lm()))
 {
     forAll(faces.mesh().boundary(), patchi)
     {
@@ -679,6 +682,16 @@ Foam::deformationUpdates::compatible::compatible
 
         faceFree_.set(patchi, new tensorField(n, tensor::I));
         faceVelocity_.set(patchi, new vectorField(n, Zero));
+
+        // Contact between bodies: its faces' points keep the contact
+        // velocity along the pair's normal (with the traction alone they
+        // moved with the cells: two bars at +-0.1 m/s, 50 cells a bar, met
+        // at 0.77 Z v, their ends sinking into each other at 0.46 v)
+        fvPatchVectorField& pf = faces.lm().boundaryFieldRef()[patchi];
+        if (isA<bodyContactFvPatchVectorField>(pf))
+        {
+            refCast<bodyContactFvPatchVectorField>(pf).setPointConstrained();
+        }
     }
 
     initLosses();
@@ -729,6 +742,7 @@ void Foam::deformationUpdates::compatible::rates
     constraints_.finalise();
     completeNodalForces();
     reportWallForces(torque);
+    balanceContactForces(lmRate);
 
     // Point velocities v_a = Pi_a (A v)_a + b_a, and the upwinding of the
     // nodal forces

@@ -13,6 +13,7 @@ Description
 
 #include "compatible.H"
 #include "syncTools.H"
+#include "bodyContactFvPatchVectorField.H"
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
@@ -115,6 +116,78 @@ void Foam::deformationUpdates::compatible::reportWallForces
         (
             (patch.size() ? faceForce_[patchi] : vector(Zero)) + reaction
         );
+    }
+}
+
+
+void Foam::deformationUpdates::compatible::balanceContactForces
+(
+    vectorField& lmRate
+)
+{
+    if (!hasContact_)
+    {
+        return;
+    }
+
+    const fvMesh& mesh = faces_.mesh();
+    vector imbalance(Zero);
+    scalar area = 0;
+
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatchVectorField& pf = faces_.lm().boundaryField()[patchi];
+        if (!isA<bodyContactFvPatchVectorField>(pf))
+        {
+            continue;
+        }
+
+        const bodyContactFvPatchVectorField& condition =
+            refCast<const bodyContactFvPatchVectorField>(pf);
+        const scalarField& magSf = condition.patch().magSf();
+
+        imbalance += condition.stageForce();
+        forAll(condition.touching(), i)
+        {
+            if (condition.touching()[i])
+            {
+                area += magSf[i];
+            }
+        }
+    }
+
+    reduce(imbalance, sumOp<vector>());
+    reduce(area, sumOp<scalar>());
+
+    if (area <= 0)
+    {
+        return;
+    }
+
+    forAll(mesh.boundary(), patchi)
+    {
+        fvPatchVectorField& pf = faces_.lm().boundaryFieldRef()[patchi];
+        if (!isA<bodyContactFvPatchVectorField>(pf))
+        {
+            continue;
+        }
+
+        bodyContactFvPatchVectorField& condition =
+            refCast<bodyContactFvPatchVectorField>(pf);
+        const scalarField& magSf = condition.patch().magSf();
+        const labelUList& faceCells = condition.patch().faceCells();
+        vector taken(Zero);
+
+        forAll(faceCells, i)
+        {
+            if (condition.touching()[i])
+            {
+                const vector correction(-(magSf[i]/area)*imbalance);
+                lmRate[faceCells[i]] += correction;
+                taken += correction;
+            }
+        }
+        condition.correctStageForce(condition.stageForce() + taken);
     }
 }
 

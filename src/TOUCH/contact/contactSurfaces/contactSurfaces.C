@@ -1,0 +1,603 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+\*---------------------------------------------------------------------------*/
+
+#include "contactSurfaces.H"
+#include "bodyContactFvPatchVectorField.H"
+#include "indexedOctree.H"
+#include "treeDataPoint.H"
+#include "ListListOps.H"
+#include "Time.H"
+
+// * * * * * * * * * * * * * * * Local Constants * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    //- A face within this fraction of its size of its partner touches it
+    static const scalar contactTouchingTolerance = 1e-6;
+
+    //- Opposed faces: the cosine of the angle of their normals below this
+    static const scalar contactOpposedCos = -0.5;
+
+    //- Lexicographic order of positions (ties of the pairing)
+    static bool before(const point& a, const point& b)
+    {
+        for (direction d = 0; d < point::nComponents; ++d)
+        {
+            if (a[d] != b[d])
+            {
+                return a[d] < b[d];
+            }
+        }
+        return false;
+    }
+
+    //- Number of contact faces of this rank
+    static label nContactFaces(const fvMesh& mesh, const labelList& patches)
+    {
+        label n = 0;
+        for (const label patchi : patches)
+        {
+            n += mesh.boundary()[patchi].size();
+        }
+        return n;
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::labelList Foam::contactSurfaces::contactPatches
+(
+    const volVectorField& lm
+)
+{
+    DynamicList<label> patches;
+    forAll(lm.boundaryField(), patchi)
+    {
+        const fvPatchVectorField& pf = lm.boundaryField()[patchi];
+        if
+        (
+            isA<solidFluxFvPatchVectorField>(pf)
+         && refCast<const solidFluxFvPatchVectorField>(pf).contactSurface()
+        )
+        {
+            patches.append(patchi);
+        }
+    }
+    return labelList(std::move(patches));
+}
+
+
+void Foam::contactSurfaces::setAllowed(const volVectorField& lm)
+{
+    const label n = patches_.size();
+    allowed_.setSize(n);
+
+    forAll(patches_, a)
+    {
+        allowed_[a].setSize(n, false);
+    }
+
+    forAll(patches_, a)
+    {
+        const bodyContactFvPatchVectorField& pf =
+            refCast<const bodyContactFvPatchVectorField>
+            (
+                lm.boundaryField()[patches_[a]]
+            );
+
+        if (pf.patches().empty())
+        {
+            allowed_[a] = true;
+            forAll(patches_, b)
+            {
+                allowed_[b][a] = true;
+            }
+            continue;
+        }
+
+        for (const word& name : pf.patches())
+        {
+            label b = -1;
+            forAll(patches_, c)
+            {
+                if (mesh_.boundary()[patches_[c]].name() == name)
+                {
+                    b = c;
+                }
+            }
+
+            if (b < 0)
+            {
+                wordList valid(patches_.size());
+                forAll(patches_, c)
+                {
+                    valid[c] = mesh_.boundary()[patches_[c]].name();
+                }
+
+                FatalErrorInFunction
+                    << "Entry 'patches' of patch " << pf.patch().name()
+                    << " in " << lm.name() << " names '" << name
+                    << "', which is not a bodyContact patch" << nl
+                    << "Valid: " << valid << nl
+                    << exit(FatalError);
+            }
+
+            allowed_[a][b] = true;
+            allowed_[b][a] = true;
+        }
+    }
+}
+
+
+template<class Type>
+Foam::tmp<Foam::Field<Type>> Foam::contactSurfaces::gather
+(
+    const Field<Type>& local
+) const
+{
+    if (!Pstream::parRun())
+    {
+        return tmp<Field<Type>>(new Field<Type>(local));
+    }
+
+    List<Field<Type>> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = local;
+    Pstream::gatherList(all);
+    Pstream::scatterList(all);
+
+    return tmp<Field<Type>>
+    (
+        new Field<Type>
+        (
+            ListListOps::combine<Field<Type>>(all, accessOp<Field<Type>>())
+        )
+    );
+}
+
+
+void Foam::contactSurfaces::updateSearch()
+{
+    // Every rank holds every position: they take the same decision
+    bool rebuild = searchPositions_.size() != x_.size();
+    if (!rebuild)
+    {
+        const scalar limit = sqr(0.5*searchSize_);
+        forAll(x_, i)
+        {
+            if (magSqr(x_[i] - searchPositions_[i]) > limit)
+            {
+                rebuild = true;
+                break;
+            }
+        }
+    }
+
+    if (!rebuild || x_.empty())
+    {
+        return;
+    }
+
+    searchPositions_ = x_;
+    searchSize_ = Foam::sqrt(max(a_));
+
+    treeBoundBox bb(searchPositions_);
+    bb.inflate(1e-4);
+    bb.min() -= point::uniform(searchSize_);
+    bb.max() += point::uniform(searchSize_);
+
+    const indexedOctree<treeDataPoint> tree
+    (
+        treeDataPoint(searchPositions_), bb, 8, 10, 3.0
+    );
+
+    const label offset = globalFaces_.localStart();
+    const scalar radiusSqr = sqr(3*searchSize_);
+
+    candidates_.setSize(globalFaces_.localSize());
+    forAll(candidates_, i)
+    {
+        candidates_[i] = tree.findSphere(x_[offset + i], radiusSqr);
+        Foam::sort(candidates_[i]);
+    }
+}
+
+
+Foam::label Foam::contactSurfaces::partner
+(
+    const label i,
+    const label gi
+) const
+{
+    const point& xi = x_[gi];
+    const vector& ni = n_[gi];
+    const scalar reachSqr = sqr(2*searchSize_);
+    const scalar behind = -0.5*Foam::sqrt(a_[gi]);
+
+    label best = -1;
+    scalar bestLateral = GREAT;
+
+    for (const label gj : candidates_[i])
+    {
+        if (gj == gi || !allowed_[slot_[gi]][slot_[gj]])
+        {
+            continue;
+        }
+
+        const vector d(x_[gj] - xi);
+        if ((ni & n_[gj]) > contactOpposedCos || magSqr(d) > reachSqr)
+        {
+            continue;
+        }
+
+        // Not a face of the far side of the body (self-contact of a thin
+        // part): a partner lies at most half a face behind
+        if ((d & ni) < behind)
+        {
+            continue;
+        }
+
+        // The nearest to the normal line; ties to the smaller global
+        // index's position order, not to the order of the ranks
+        const scalar lateral = mag(d - (d & ni)*ni);
+        if
+        (
+            lateral < bestLateral - SMALL*searchSize_
+         || (
+                best >= 0
+             && lateral <= bestLateral + SMALL*searchSize_
+             && before(x_[gj], x_[best])
+            )
+        )
+        {
+            best = gj;
+            bestLateral = min(lateral, bestLateral);
+        }
+    }
+
+    // Its centre projects within about the partner face
+    if (best >= 0 && bestLateral > 0.75*Foam::sqrt(a_[best]))
+    {
+        return -1;
+    }
+
+    return best;
+}
+
+
+void Foam::contactSurfaces::checkMatching(const labelList& partners)
+{
+    labelList all(partners);
+    if (Pstream::parRun())
+    {
+        Pstream::listCombineGather(all, maxEqOp<label>());
+        Pstream::listCombineScatter(all);
+    }
+
+    label nPaired = 0;
+    label nOneWay = 0;
+    forAll(all, g)
+    {
+        if (all[g] >= 0)
+        {
+            ++nPaired;
+            nOneWay += all[all[g]] != g;
+        }
+    }
+
+    if (nPaired == 0)
+    {
+        return;
+    }
+    matchChecked_ = true;
+
+    if (nOneWay)
+    {
+        WarningInFunction
+            << nOneWay << " of " << nPaired << " contact faces with a"
+            << " partner are not their partner's partner: the faces that"
+            << " meet do not match.  Their forces are exchanged exactly but"
+            << " lumped by half areas, not by overlap areas (with FUpdate"
+            << " plain such a contact can be unstable)" << endl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::contactSurfaces::contactSurfaces
+(
+    const fvMesh& mesh,
+    const volVectorField& lm
+)
+:
+    mesh_(mesh),
+    patches_(contactPatches(lm)),
+    allowed_(),
+    start_(patches_.size() + 1, 0),
+    globalFaces_(nContactFaces(mesh, patches_)),
+    searchSize_(0),
+    mostTensile_(-GREAT),
+    matchChecked_(false)
+{
+    setAllowed(lm);
+
+    forAll(patches_, a)
+    {
+        start_[a + 1] = start_[a] + mesh.boundary()[patches_[a]].size();
+    }
+
+    if (Pstream::master())
+    {
+        const fileName dir
+        (
+            mesh.time().globalPath()/"postProcessing"/"contact"
+           /mesh.time().timeName()
+        );
+        mkDir(dir);
+        file_.reset(new OFstream(dir/"contact.dat"));
+        file_()
+            << "# Contact of the bodyContact patches: at the first stage of"
+            << " each step; force and area summed over the pairs" << nl
+            << "# Time nFaces normalForce area maxPenetration"
+            << " mostTensileTraction" << nl;
+        file_().precision(12);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+bool Foam::contactSurfaces::any(const volVectorField& lm)
+{
+    return returnReduce(contactPatches(lm).size(), maxOp<label>()) > 0;
+}
+
+
+void Foam::contactSurfaces::update
+(
+    const PtrList<solidFluxFvPatchVectorField::interiorState>& states,
+    const volTensorField& F,
+    volVectorField& lm,
+    const label stage,
+    const scalar time
+)
+{
+    // 1. This rank's faces on the current surface, per current area
+    const label nLocal = globalFaces_.localSize();
+    pointField x(nLocal);
+    vectorField n(nLocal);
+    vectorField v(nLocal);
+    vectorField t(nLocal);
+    scalarField Zp(nLocal);
+    scalarField Zs(nLocal);
+    scalarField a(nLocal);
+    labelList slot(nLocal);
+
+    forAll(patches_, s)
+    {
+        const fvPatch& patch = mesh_.boundary()[patches_[s]];
+        const solidFluxFvPatchVectorField::interiorState& state = states[s];
+        const labelUList& faceCells = patch.faceCells();
+        const vectorField& Sf = patch.Sf();
+        const scalarField& magSf = patch.magSf();
+
+        forAll(faceCells, i)
+        {
+            const label k = start_[s] + i;
+
+            // Current area by the cell's F (Nanson), and the factor from
+            // per reference area to per current area
+            a[k] = mag(cof(F[faceCells[i]]) & Sf[i]);
+            const scalar perCurrent = magSf[i]/a[k];
+
+            x[k] = state.xPoints[i];
+            n[k] = state.n[i];
+            v[k] = state.p[i]/state.rho[i];
+            t[k] = perCurrent*state.t[i];
+            Zp[k] = perCurrent*state.rho[i]*state.Up[i];
+            Zs[k] = perCurrent*state.rho[i]*state.Us[i];
+            slot[k] = s;
+        }
+    }
+
+    x_ = gather(x);
+    n_ = gather(n);
+    v_ = gather(v);
+    t_ = gather(t);
+    Zp_ = gather(Zp);
+    Zs_ = gather(Zs);
+    a_ = gather(a);
+    slot_ = gather(Field<label>(slot));
+
+    // 2. Candidates, rebuilt only when the faces moved far enough
+    updateSearch();
+
+    // 3-5. Each face of this rank as side 1 of its pair
+    const label offset = globalFaces_.localStart();
+    vectorField force(x_.size(), Zero);
+
+    // Per face, the pairs pushing on it weighted by their areas: the
+    // weight, the outward normal and the contact velocity v*_n n (the
+    // constraint of the compatible update)
+    scalarField weight(x_.size(), Zero);
+    vectorField normalSum(x_.size(), Zero);
+    vectorField velocitySum(x_.size(), Zero);
+
+    labelList partners(matchChecked_ ? 0 : x_.size(), -1);
+
+    label nActive = 0;
+    scalar normalForce = 0;
+    scalar area = 0;
+    scalar penetration = 0;
+
+    forAll(patches_, s)
+    {
+        bodyContactFvPatchVectorField& condition =
+            refCast<bodyContactFvPatchVectorField>
+            (
+                lm.boundaryFieldRef()[patches_[s]]
+            );
+        boolList& contact = condition.contact();
+
+        forAll(contact, i)
+        {
+            const label k = start_[s] + i;
+            const label gi = offset + k;
+            const label gj = partner(k, gi);
+
+            if (!matchChecked_)
+            {
+                partners[gi] = gj;
+            }
+
+            if (gj < 0)
+            {
+                contact[i] = false;
+                continue;
+            }
+
+            vector nij(n_[gi] - n_[gj]);
+            nij /= mag(nij);
+
+            // Both tractions on the plane of normal n (side 2's own
+            // normal is -n)
+            const vector t1(t_[gi]);
+            const vector t2(-t_[gj]);
+            const vector dv(v_[gj] - v_[gi]);
+
+            const scalar Zn1 = Zp_[gi];
+            const scalar Zn2 = Zp_[gj];
+            const scalar tN =
+                (Zn2*(t1 & nij) + Zn1*(t2 & nij) + Zn1*Zn2*(dv & nij))
+               /(Zn1 + Zn2);
+
+            const scalar gap = (x_[gj] - x_[gi]) & nij;
+            const bool compressive = tN < 0;
+
+            // Each side within the rigid wall's tolerance of its size of
+            // the contact plane: the pair's gap within the sum (with the
+            // first side's alone, two equal bars released one stage early
+            // did not touch again where a bar on a wall did: their gap of
+            // 3.8e-8 m against 2e-8 m, a wall's 1.9e-8 m against 2e-8 m)
+            contact[i] =
+                compressive
+             && (
+                    contact[i]
+                 || gap
+                 <= contactTouchingTolerance
+                   *(Foam::sqrt(a_[gi]) + Foam::sqrt(a_[gj]))
+                );
+
+            if (!contact[i])
+            {
+                continue;
+            }
+
+            const scalar Zt1 = Zs_[gi];
+            const scalar Zt2 = Zs_[gj];
+            const tensor tangential(tensor::I - sqr(nij));
+            const vector stick
+            (
+                tangential
+              & ((Zt2*t1 + Zt1*t2 + Zt1*Zt2*dv)/(Zt1 + Zt2))
+            );
+
+            const scalar share = 0.5*a_[gi];
+            const vector f
+            (
+                (tN*nij + tangentialTraction(stick, tN))*share
+            );
+            force[gi] += f;
+            force[gj] -= f;
+
+            const scalar vN =
+                (
+                    Zn1*(v_[gi] & nij) + Zn2*(v_[gj] & nij)
+                  + ((t2 - t1) & nij)
+                )/(Zn1 + Zn2);
+            weight[gi] += share;
+            weight[gj] += share;
+            normalSum[gi] += share*nij;
+            normalSum[gj] -= share*nij;
+            velocitySum[gi] += (share*vN)*nij;
+            velocitySum[gj] += (share*vN)*nij;
+
+            ++nActive;
+            normalForce -= tN*share;
+            area += share;
+            penetration = max(penetration, -gap);
+            mostTensile_ = max(mostTensile_, tN);
+        }
+    }
+
+    if (!matchChecked_)
+    {
+        checkMatching(partners);
+    }
+
+    if (Pstream::parRun())
+    {
+        Pstream::listCombineGather(force, plusEqOp<vector>());
+        Pstream::listCombineScatter(force);
+        Pstream::listCombineGather(weight, plusEqOp<scalar>());
+        Pstream::listCombineScatter(weight);
+        Pstream::listCombineGather(normalSum, plusEqOp<vector>());
+        Pstream::listCombineScatter(normalSum);
+        Pstream::listCombineGather(velocitySum, plusEqOp<vector>());
+        Pstream::listCombineScatter(velocitySum);
+    }
+
+    // The conditions' tractions per reference area
+    forAll(patches_, s)
+    {
+        bodyContactFvPatchVectorField& condition =
+            refCast<bodyContactFvPatchVectorField>
+            (
+                lm.boundaryFieldRef()[patches_[s]]
+            );
+        vectorField& traction = condition.traction();
+        boolList& touching = condition.touching();
+        vectorField& normal = condition.normal();
+        vectorField& velocity = condition.contactVelocity();
+        const scalarField& magSf = condition.patch().magSf();
+
+        forAll(traction, i)
+        {
+            const label g = offset + start_[s] + i;
+            traction[i] = force[g]/magSf[i];
+            touching[i] = weight[g] > 0;
+            if (touching[i])
+            {
+                normal[i] = normalSum[g]/mag(normalSum[g]);
+                velocity[i] = velocitySum[g]/weight[g];
+            }
+        }
+    }
+
+    // The report, at the step's first stage
+    if (stage == 1)
+    {
+        reduce(nActive, sumOp<label>());
+        reduce(normalForce, sumOp<scalar>());
+        reduce(area, sumOp<scalar>());
+        reduce(penetration, maxOp<scalar>());
+        reduce(mostTensile_, maxOp<scalar>());
+
+        if (file_.valid())
+        {
+            file_()
+                << time << ' ' << nActive << ' ' << normalForce << ' '
+                << area << ' ' << penetration << ' '
+                << (mostTensile_ > -GREAT ? mostTensile_ : 0) << endl;
+        }
+        mostTensile_ = -GREAT;
+    }
+}
+
+
+// ************************************************************************* //
