@@ -103,7 +103,10 @@ Foam::scalarField Foam::functionObjects::solidMonitor::bodySums() const
     const scalarField& V = mesh_.V();
     const labelList& cellBody = bodies_.cellBody();
     const vectorField& lm = solid.lm().primitiveField();
-    const vectorField x(mesh_.C().primitiveField() + solid.D().primitiveField());
+    const vectorField x
+    (
+        mesh_.C().primitiveField() + solid.D().primitiveField()
+    );
 
     scalarField strain(V.size());
     law.cellStrainEnergy(solid.F(), strain);
@@ -181,7 +184,10 @@ void Foam::functionObjects::solidMonitor::writeFileHeader(Ostream& os)
     writeTabbed(os, "numericalDissipationFraction");
     for (const label patchi : workPatches_)
     {
-        writeTabbed(os, "boundaryWork(" + mesh_.boundary()[patchi].name() + ")");
+        writeTabbed
+        (
+            os, "boundaryWork(" + mesh_.boundary()[patchi].name() + ")"
+        );
     }
     if (bodies_.size() > 1)
     {
@@ -332,7 +338,12 @@ bool Foam::functionObjects::solidMonitor::execute()
     // The energy balance: the boundaries' work per patch and per body
     // (this rank's, reduced here), the plastic work since the start
     const boundaryWork& account = *solid.boundaryWorkAccount();
-    scalarField patchWork(account.patchWork());
+    // (the patches of every rank: not its processor patches, which
+    // differ between ranks and do no work)
+    scalarField patchWork
+    (
+        UIndirectList<scalar>(account.patchWork(), workPatches_)
+    );
     scalarField bodyWork(account.bodyWork());
     Pstream::listCombineGather(patchWork, plusEqOp<scalar>());
     Pstream::listCombineScatter(patchWork);
@@ -378,9 +389,9 @@ bool Foam::functionObjects::solidMonitor::execute()
         }
         os  << tab << work << tab << numerical
             << tab << (reference > 0 ? numerical/reference : 0);
-        for (const label patchi : workPatches_)
+        for (const scalar w : patchWork)
         {
-            os  << tab << patchWork[patchi];
+            os  << tab << w;
         }
         forAll(bodyE0_, bodyi)
         {
