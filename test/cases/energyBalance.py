@@ -46,7 +46,8 @@
                   1e-12 of its initial one (no force acts on either);
                   the bodies' momenta, energies, work and numerical
                   dissipation add up to the totals; each body's
-                  numerical dissipation >= 0.
+                  numerical dissipation >= 0; on two ranks (each
+                  block cut) every column equals the serial one.
 
 Asserted: uniform strain: |numericalDissipation| <= 1e-10 of the stored
 energy at every step, boundaryWork and strainEnergy within 1e-10 of the
@@ -54,12 +55,15 @@ closed form at the end, the kinetic energy constant to 1e-10 (round-off:
 F = 1.002 keeps the strain 2e-3 to about 1e-13 a step; measured 1e-12),
 no per-body columns for one body; Taylor bar and bar rebound: numericalDissipation
 >= -1e-12 E0 at every step (round-off), plastic dissipation within 1e-10
-of the field's; moving wall: W within 1e-10 (plain) and 1e-2 (compatible)
+of the field's; two bodies: 2 ranks = serial to 1e-10 of each column's scale (the
+momenta's own, the energies' at least 1e-3 of the largest kinetic
+energy); moving wall: W within 1e-10 (plain) and 1e-2 (compatible)
 of v0 (p - p0), numerical dissipation >= 0 at every step; two bodies: as above.
 Work folders: test/runs/energyBalance/.
 """
 
 import os
+import shutil
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
@@ -270,6 +274,36 @@ def two_bodies(root, failures):
     run.run(["touchFoam"], case, timeout=testing.RUN_TIMEOUT)
     m = read_monitor(case)
 
+    # The same on two ranks, each block cut between them
+    par = os.path.join(root, "twoBodiesParallel")
+    # The mesh and 0/ too (copy_case takes the inputs only)
+    shutil.copytree(case, par, ignore=shutil.ignore_patterns(
+        "postProcessing", "processor*", "log.*", "%g" % end))
+    with open(os.path.join(par, "system", "decomposeParDict"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class dictionary;"
+                " object decomposeParDict; }\nnumberOfSubdomains 2;\n"
+                "method simple;\ncoeffs { n (1 2 1); }\n")
+    run.run(["decomposePar", "-force"], par)
+    run.run_parallel(["touchFoam"], par, 2, timeout=testing.RUN_TIMEOUT)
+    mp = read_monitor(par)
+    worst_par = 0.0
+    for column in m:
+        if column in ("p", "L"):
+            continue
+        if column not in mp or len(mp[column]) != len(m[column]):
+            failures.append("two bodies: 2 ranks lack column %s or rows"
+                            % column)
+            break
+        scale = max(np.max(np.abs(m[column])),
+                    1e-3 * np.max(m["kineticEnergy"]), 1e-300)
+        if column[0] in "pL" or column == "Time":
+            scale = max(np.max(np.abs(m[column])), 1e-300)
+        worst_par = max(worst_par,
+                        np.max(np.abs(mp[column] - m[column])) / scale)
+    if worst_par > 1e-10:
+        failures.append("two bodies: 2 ranks differ from serial by %.1e"
+                        % worst_par)
+
     lines = []
     if not all(k in m for k in ("px(left)", "px(right)")):
         failures.append("two bodies: no columns of bodies left and right"
@@ -296,9 +330,10 @@ def two_bodies(root, failures):
     E0 = m["totalEnergy"][0]
     lines.append("two bodies (left, right; %d steps): each body's momentum"
                  " constant to %.1e, bodies sum to the totals to %.1e,"
-                 " numerical dissipation %.2e E0 at the end"
+                 " numerical dissipation %.2e E0 at the end; 2 ranks"
+                 " equal serial to %.1e"
                  % (len(m["Time"]), worst_p, worst_sum,
-                    m["numericalDissipation"][-1] / E0))
+                    m["numericalDissipation"][-1] / E0, worst_par))
     if worst_p > 1e-12:
         failures.append("two bodies: a body's momentum changed by %.1e"
                         % worst_p)
