@@ -47,7 +47,10 @@
                   the bodies' momenta, energies, work and numerical
                   dissipation add up to the totals; each body's
                   numerical dissipation >= 0; on two ranks (each
-                  block cut) every column equals the serial one.
+                  block cut) every column equals the serial one.  Under
+                  gravity g = (0, -9.81, 3): each body's momentum is
+                  p0 + rho V g t (V = 0.25 m^3) to 1e-12, the bodies'
+                  potential energies add up to the total.
 
 Asserted: uniform strain: |numericalDissipation| <= 1e-10 of the stored
 energy at every step, boundaryWork and strainEnergy within 1e-10 of the
@@ -343,6 +346,45 @@ def two_bodies(root, failures):
     return "; ".join(lines)
 
 
+def falling_bodies(root, failures):
+    """The two blocks under gravity: each body's momentum grows by its
+    weight, p_B(t) = p_B(t1) + rho V_B g (t - t1), and the bodies'
+    potential energies add up to the total."""
+    g = np.array([0.0, -9.81, 3.0])
+    case = os.path.join(root, "fallingBodies")
+    shutil.copytree(os.path.join(root, "twoBodies"), case,
+                    ignore=shutil.ignore_patterns(
+                        "postProcessing", "processor*", "log.*", "0.002"))
+    with open(os.path.join(case, "constant", "g"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class"
+                " uniformDimensionedVectorField; object g; }\n"
+                "dimensions [0 1 -2 0 0 0 0];\nvalue (%r %r %r);\n"
+                % tuple(g))
+    run.run(["touchFoam"], case, timeout=testing.RUN_TIMEOUT)
+    m = read_monitor(case)
+    rho = cases.material(case)["rho"]
+    t = m["Time"] - m["Time"][0]
+    worst = 0.0
+    for body in ("left", "right"):
+        p = np.column_stack([m["p%s(%s)" % (c, body)] for c in "xyz"])
+        exact = p[0] + rho * 0.25 * np.outer(t, g)
+        worst = max(worst, np.max(np.abs(p - exact)) / np.linalg.norm(p[0]))
+    parts = m["potentialEnergy(left)"] + m["potentialEnergy(right)"]
+    off = np.max(np.abs(parts - m["potentialEnergy"])) \
+        / np.max(np.abs(m["potentialEnergy"]))
+    negative = min(np.min(m["numericalDissipation(%s)" % b]) for b in
+                   ("left", "right")) / m["totalEnergy"][0]
+    if worst > 1e-12 or off > 1e-12 or negative < -1e-12:
+        failures.append("falling bodies: momentum off rho V g t by %.1e,"
+                        " potential energies off the total by %.1e,"
+                        " numerical dissipation %.1e E0 (limits 1e-12)"
+                        % (worst, off, negative))
+    return ("falling bodies (g = (0, -9.81, 3)): each body's momentum"
+            " against p0 + rho V g t to %.1e, potential energies sum to"
+            " the total to %.1e, numerical dissipation min %.1e E0"
+            % (worst, off, negative))
+
+
 def body():
     root = testing.work_dir(NAME)
     lines, failures = [], []
@@ -353,6 +395,7 @@ def body():
     lines.append(moving_wall(root, "plain", 1e-10, failures))
     lines.append(moving_wall(root, "compatible", 1e-2, failures))
     lines.append(two_bodies(root, failures))
+    lines.append(falling_bodies(root, failures))
     return testing.verdict(lines, failures)
 
 
