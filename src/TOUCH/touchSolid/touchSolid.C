@@ -151,20 +151,6 @@ void Foam::touchSolid::computeRates(const label stage)
 }
 
 
-Foam::label Foam::touchSolid::firstInvalidCell() const
-{
-    forAll(F_, celli)
-    {
-        if (!validCell(F_[celli], lm_[celli]))
-        {
-            return celli;
-        }
-    }
-
-    return -1;
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::touchSolid::touchSolid(const fvMesh& mesh)
@@ -252,7 +238,8 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     L0_(Zero),
     Lstage_(Zero),
     E0_(0),
-    Estage_(0)
+    Estage_(0),
+    boundaryWork_(nullptr)
 {
     checkTwoD();
 
@@ -319,6 +306,10 @@ void Foam::touchSolid::storeOldTime()
     D0_ = D_.primitiveField();
     pointD0_ = pointD_.primitiveField();
     law_->storeOldTime();
+    if (boundaryWork_)
+    {
+        boundaryWork_->storeOldTime();
+    }
 
     if (preserveAngularMomentum_)
     {
@@ -338,6 +329,10 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
     //     U <- alpha U^n + (1 - alpha)(U + dt L(U))
     const scalar alpha = rungeKutta_.alpha(stage);
     const scalar beta = 1 - alpha;
+    if (boundaryWork_)
+    {
+        boundaryWork_->addStage(alpha, dt, *update_, *law_);
+    }
 
     vectorField& lm = lm_.primitiveFieldRef();
     tensorField& F = F_.primitiveFieldRef();
@@ -429,12 +424,6 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
 }
 
 
-bool Foam::touchSolid::valid() const
-{
-    return returnReduce(firstInvalidCell() < 0, andOp<bool>());
-}
-
-
 void Foam::touchSolid::restoreOldTime()
 {
     lm_.primitiveFieldRef() = lm0_;
@@ -442,6 +431,10 @@ void Foam::touchSolid::restoreOldTime()
     D_.primitiveFieldRef() = D0_;
     pointD_.primitiveFieldRef() = pointD0_;
     law_->restoreOldTime();
+    if (boundaryWork_)
+    {
+        boundaryWork_->restoreOldTime();
+    }
 }
 
 

@@ -21,6 +21,21 @@ Description
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
+Foam::label Foam::touchSolid::firstInvalidCell() const
+{
+    forAll(F_, celli)
+    {
+        if (!validCell(F_[celli], lm_[celli]))
+        {
+            return celli;
+        }
+    }
+
+    return -1;
+}
+
+
+
 void Foam::touchSolid::checkInput() const
 {
     // The sub-dictionary of a model that is not selected is ignored
@@ -181,6 +196,14 @@ void Foam::touchSolid::reportInvalidCell
         << nl << "    nearest boundary " << nearestPatch << " ("
         << nearestDistance << " m from the reference centre)"
         << nl << "    law              " << law_->type() << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::touchSolid::valid() const
+{
+    return returnReduce(firstInvalidCell() < 0, andOp<bool>());
 }
 
 

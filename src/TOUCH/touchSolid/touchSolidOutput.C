@@ -125,6 +125,19 @@ Foam::scalar Foam::touchSolid::potentialEnergy() const
 }
 
 
+void Foam::touchSolid::accountBoundaryWork
+(
+    const labelList& cellBody,
+    const label nBodies
+)
+{
+    if (!boundaryWork_)
+    {
+        boundaryWork_.reset(new boundaryWork(mesh_, cellBody, nBodies));
+    }
+}
+
+
 void Foam::touchSolid::writeSummary(Ostream& os) const
 {
     os  << "    mechanical law  ";

@@ -9,6 +9,7 @@ License
 #include "declaredEntry.H"
 #include "touchSolid.H"
 #include "rigidWallFvPatchVectorField.H"
+#include "emptyFvPatch.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -61,10 +62,99 @@ Foam::labelList Foam::functionObjects::solidMonitor::findWallPatches() const
 }
 
 
+Foam::labelList Foam::functionObjects::solidMonitor::findWorkPatches() const
+{
+    DynamicList<label> patches;
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        if (!patch.coupled() && !isA<emptyFvPatch>(patch))
+        {
+            patches.append(patchi);
+        }
+    }
+    return labelList(std::move(patches));
+}
+
+
+Foam::tmp<Foam::scalarField>
+Foam::functionObjects::solidMonitor::cellPlasticWork() const
+{
+    auto tWork = tmp<scalarField>::New(mesh_.nCells(), Zero);
+
+    if (dissipates_)
+    {
+        const touchSolid& solid =
+            mesh_.lookupObject<touchSolid>(touchSolid::typeName);
+        solid.law().addPlasticWork(tWork.ref());
+        tWork.ref() *= mesh_.V().field();
+    }
+
+    return tWork;
+}
+
+
+Foam::scalarField Foam::functionObjects::solidMonitor::bodySums() const
+{
+    const touchSolid& solid =
+        mesh_.lookupObject<touchSolid>(touchSolid::typeName);
+    const mechanicalLaw& law = solid.law();
+    const gravity* g = solid.gravityForce();
+    const scalarField& V = mesh_.V();
+    const labelList& cellBody = bodies_.cellBody();
+    const vectorField& lm = solid.lm().primitiveField();
+    const vectorField x
+    (
+        mesh_.C().primitiveField() + solid.D().primitiveField()
+    );
+
+    scalarField strain(V.size());
+    law.cellStrainEnergy(solid.F(), strain);
+    const tmp<scalarField> tPlastic(cellPlasticWork());
+    const scalarField& plastic = tPlastic();
+
+    scalarField sums(nValues*bodies_.size(), Zero);
+    forAll(V, celli)
+    {
+        scalar* s = &sums[nValues*cellBody[celli]];
+        const vector p(V[celli]*lm[celli]);
+        const vector L(x[celli] ^ p);
+
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            s[d] += p[d];
+            s[3 + d] += L[d];
+        }
+        s[6] += 0.5*(p & lm[celli])/law.rho(celli);
+        s[7] += strain[celli];
+        if (g)
+        {
+            s[8] -= g->weight()[celli] & x[celli];
+        }
+        s[9] += plastic[celli];
+    }
+
+    Pstream::listCombineGather(sums, plusEqOp<scalar>());
+    Pstream::listCombineScatter(sums);
+
+    return sums;
+}
+
+
 void Foam::functionObjects::solidMonitor::writeFileHeader(Ostream& os)
 {
-    writeHeader(os, "Invariants of the solid");
+    writeHeader(os, "Invariants and energy balance of the solid");
     writeHeaderValue(os, "Angular momentum about", origin_);
+    writeHeaderValue
+    (
+        os, "E0 (kinetic + strain + potential energy at the start)", E0_
+    );
+    writeHeaderValue(os, "Bodies", bodies_.size());
+    forAll(bodies_.names(), bodyi)
+    {
+        writeHeaderValue(os, "Body " + bodies_.names()[bodyi] + " E0",
+            bodies_.size() > 1 ? bodyE0_[bodyi] : E0_);
+    }
     writeCommented(os, "Time");
     for
     (
@@ -84,6 +174,45 @@ void Foam::functionObjects::solidMonitor::writeFileHeader(Ostream& os)
         const word& name = mesh_.boundary()[patchi].name();
         writeTabbed(os, "contactFaces(" + name + ")");
         writeTabbed(os, "wallForce(" + name + ")");
+    }
+    if (dissipates_)
+    {
+        writeTabbed(os, "plasticDissipation");
+    }
+    writeTabbed(os, "boundaryWork");
+    writeTabbed(os, "numericalDissipation");
+    writeTabbed(os, "numericalDissipationFraction");
+    for (const label patchi : workPatches_)
+    {
+        writeTabbed
+        (
+            os, "boundaryWork(" + mesh_.boundary()[patchi].name() + ")"
+        );
+    }
+    if (bodies_.size() > 1)
+    {
+        for (const word& body : bodies_.names())
+        {
+            for
+            (
+                const char* title
+              : {"px", "py", "pz", "Lx", "Ly", "Lz", "kineticEnergy",
+                 "strainEnergy"}
+            )
+            {
+                writeTabbed(os, word(title) + "(" + body + ")");
+            }
+            if (gravity_)
+            {
+                writeTabbed(os, "potentialEnergy(" + body + ")");
+            }
+            if (dissipates_)
+            {
+                writeTabbed(os, "plasticDissipation(" + body + ")");
+            }
+            writeTabbed(os, "boundaryWork(" + body + ")");
+            writeTabbed(os, "numericalDissipation(" + body + ")");
+        }
     }
     os  << endl;
 }
@@ -105,9 +234,43 @@ Foam::functionObjects::solidMonitor::solidMonitor
     gravity_
     (
         mesh_.lookupObject<touchSolid>(touchSolid::typeName).hasGravity()
-    )
+    ),
+    dissipates_
+    (
+        mesh_.lookupObject<touchSolid>(touchSolid::typeName).law()
+       .dissipates()
+    ),
+    bodies_(mesh_),
+    workPatches_(findWorkPatches()),
+    E0_(0),
+    bodyE0_(),
+    bodyPlastic0_(),
+    plastic0_(0)
 {
     read(dict);
+
+    // The balance starts now: the energy of the present state, the work
+    // of the boundaries from zero, the law's plastic work so far
+    touchSolid& solid =
+        mesh_.lookupObjectRef<touchSolid>(touchSolid::typeName);
+    solid.accountBoundaryWork(bodies_.cellBody(), bodies_.size());
+
+    E0_ =
+        solid.kineticEnergy() + solid.strainEnergy() + solid.potentialEnergy();
+    plastic0_ = gSum(cellPlasticWork()());
+
+    if (bodies_.size() > 1)
+    {
+        const scalarField sums(bodySums());
+        bodyE0_.setSize(bodies_.size());
+        bodyPlastic0_.setSize(bodies_.size());
+        forAll(bodyE0_, bodyi)
+        {
+            const scalar* s = &sums[nValues*bodyi];
+            bodyE0_[bodyi] = s[6] + s[7] + s[8];
+            bodyPlastic0_[bodyi] = s[9];
+        }
+    }
 
     if (Pstream::master() && writeToFile())
     {
@@ -172,6 +335,33 @@ bool Foam::functionObjects::solidMonitor::execute()
         wallForce[i] = wall.contactForce() & wall.normal();
     }
 
+    // The energy balance: the boundaries' work per patch and per body
+    // (this rank's, reduced here), the plastic work since the start
+    const boundaryWork& account = *solid.boundaryWorkAccount();
+    // (the patches of every rank: not its processor patches, which
+    // differ between ranks and do no work)
+    scalarField patchWork
+    (
+        UIndirectList<scalar>(account.patchWork(), workPatches_)
+    );
+    scalarField bodyWork(account.bodyWork());
+    Pstream::listCombineGather(patchWork, plusEqOp<scalar>());
+    Pstream::listCombineScatter(patchWork);
+    Pstream::listCombineGather(bodyWork, plusEqOp<scalar>());
+    Pstream::listCombineScatter(bodyWork);
+
+    const scalar work = sum(bodyWork);
+    const scalar plastic =
+        dissipates_ ? gSum(cellPlasticWork()()) - plastic0_ : 0;
+    const scalar numerical =
+        E0_ + work - (kinetic + stored + potential + plastic);
+    const scalar reference = E0_ > 0 ? E0_ : E0_ + work;
+
+    const scalarField sums
+    (
+        bodies_.size() > 1 ? bodySums() : scalarField()
+    );
+
     if (Pstream::master() && writeToFile())
     {
         OFstream& os = file();
@@ -192,6 +382,39 @@ bool Foam::functionObjects::solidMonitor::execute()
         forAll(wallPatches_, i)
         {
             os  << tab << contactFaces[i] << tab << wallForce[i];
+        }
+        if (dissipates_)
+        {
+            os  << tab << plastic;
+        }
+        os  << tab << work << tab << numerical
+            << tab << (reference > 0 ? numerical/reference : 0);
+        for (const scalar w : patchWork)
+        {
+            os  << tab << w;
+        }
+        forAll(bodyE0_, bodyi)
+        {
+            const scalar* s = &sums[nValues*bodyi];
+            const vector pb(s[0], s[1], s[2]);
+            const vector Lb(vector(s[3], s[4], s[5]) - (origin_ ^ pb));
+            const scalar plasticb = s[9] - bodyPlastic0_[bodyi];
+
+            os  << tab << pb.x() << tab << pb.y() << tab << pb.z()
+                << tab << Lb.x() << tab << Lb.y() << tab << Lb.z()
+                << tab << s[6] << tab << s[7];
+            if (gravity_)
+            {
+                os  << tab << s[8];
+            }
+            if (dissipates_)
+            {
+                os  << tab << plasticb;
+            }
+            os  << tab << bodyWork[bodyi]
+                << tab
+                << bodyE0_[bodyi] + bodyWork[bodyi]
+                 - (s[6] + s[7] + s[8] + plasticb);
         }
         os  << endl;
     }

@@ -230,4 +230,19 @@ Foam::scalar Foam::mechanicalLaw::totalStrainEnergy
 }
 
 
+void Foam::mechanicalLaw::cellStrainEnergy
+(
+    const volTensorField& F,
+    scalarField& energy
+) const
+{
+    const scalarField& V = mesh_.V();
+
+    forAll(V, celli)
+    {
+        energy[celli] = V[celli]*strainEnergy(F[celli]);
+    }
+}
+
+
 // ************************************************************************* //

@@ -169,7 +169,8 @@ Foam::mechanicalLaws::vonMisesPlastic::vonMisesPlastic
     firstStage_(true),
     presentTau_(mesh.nCells()),
     presentF_(mesh.nCells()),
-    presentValid_(false)
+    presentValid_(false),
+    plasticWork_(mesh.nCells(), Zero)
 {
     CpInv_.correctBoundaryConditions();
     epsilonP_.correctBoundaryConditions();
@@ -394,6 +395,25 @@ Foam::scalar Foam::mechanicalLaws::vonMisesPlastic::totalStrainEnergy
 }
 
 
+void Foam::mechanicalLaws::vonMisesPlastic::cellStrainEnergy
+(
+    const volTensorField& F,
+    scalarField& energy
+) const
+{
+    const scalarField& V = mesh_.V();
+    const tensorField& Fi = F.primitiveField();
+
+    returnMapPresent(Fi);
+
+    forAll(V, celli)
+    {
+        energy[celli] =
+            V[celli]*elasticEnergy(presentTau_[celli], det(Fi[celli]));
+    }
+}
+
+
 void Foam::mechanicalLaws::vonMisesPlastic::storeOldTime()
 {
     CpInv0_ = CpInv_.primitiveField();
@@ -431,6 +451,20 @@ void Foam::mechanicalLaws::vonMisesPlastic::commitStep
             Fi[celli], CpInvBase_[celli], epsilonPBase_[celli],
             tau, CpInv[celli], epsilonP[celli]
         );
+
+        // The work of the step's flow (the class description)
+        const scalar increment = epsilonP[celli] - epsilonP0_[celli];
+        if (increment > 0)
+        {
+            plasticWork_[celli] +=
+                (yieldOnCauchy_ ? det(Fi[celli]) : 1)
+               *(
+                    yieldStress_
+                  + 0.5*hardeningModulus_
+                   *(epsilonP0_[celli] + epsilonP[celli])
+                )
+               *increment;
+        }
     }
 
     presentValid_ = false;

@@ -391,6 +391,64 @@ Foam::scalar Foam::mechanicalLaws::zoned::totalStrainEnergy
 }
 
 
+void Foam::mechanicalLaws::zoned::cellStrainEnergy
+(
+    const volTensorField& F,
+    scalarField& energy
+) const
+{
+    const scalarField& V = mesh_.V();
+    scalarField zoneEnergy;
+
+    forAll(laws_, m)
+    {
+        const mechanicalLaw& law = laws_[m];
+
+        if (law.hasState())
+        {
+            // The law's state covers the mesh: its cells of the zone
+            zoneEnergy.setSize(V.size());
+            law.cellStrainEnergy(zoneF(F, m)(), zoneEnergy);
+            for (const label celli : zoneCells_[m])
+            {
+                energy[celli] = zoneEnergy[celli];
+            }
+        }
+        else
+        {
+            for (const label celli : zoneCells_[m])
+            {
+                energy[celli] = V[celli]*law.strainEnergy(F[celli]);
+            }
+        }
+    }
+}
+
+
+bool Foam::mechanicalLaws::zoned::dissipates() const
+{
+    for (const mechanicalLaw& law : laws_)
+    {
+        if (law.dissipates())
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
+void Foam::mechanicalLaws::zoned::addPlasticWork(scalarField& work) const
+{
+    // A law's state covers the mesh, with no flow outside its zone (F = I
+    // there)
+    for (const mechanicalLaw& law : laws_)
+    {
+        law.addPlasticWork(work);
+    }
+}
+
+
 bool Foam::mechanicalLaws::zoned::hasState() const
 {
     for (const mechanicalLaw& law : laws_)

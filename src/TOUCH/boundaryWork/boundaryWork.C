@@ -1,0 +1,88 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+\*---------------------------------------------------------------------------*/
+
+#include "boundaryWork.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::boundaryWork::boundaryWork
+(
+    const fvMesh& mesh,
+    const labelList& cellBody,
+    const label nBodies
+)
+:
+    mesh_(mesh),
+    cellBody_(cellBody),
+    patchWork_(mesh.boundary().size(), Zero),
+    bodyWork_(nBodies, Zero),
+    patchWork0_(patchWork_),
+    bodyWork0_(bodyWork_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::boundaryWork::storeOldTime()
+{
+    patchWork0_ = patchWork_;
+    bodyWork0_ = bodyWork_;
+}
+
+
+void Foam::boundaryWork::addStage
+(
+    const scalar alpha,
+    const scalar dt,
+    const deformationUpdate& update,
+    const mechanicalLaw& law
+)
+{
+    const PtrList<vectorField>& pC = update.contactMomentum();
+    const PtrList<vectorField>& tC = update.contactTraction();
+    const scalar beta = 1 - alpha;
+
+    // W <- alpha W^n + beta (W + dt P): the part of the present work first,
+    // then the stage's power added face by face
+    patchWork_ = alpha*patchWork0_ + beta*patchWork_;
+    bodyWork_ = alpha*bodyWork0_ + beta*bodyWork_;
+
+    const scalar weight = beta*dt;
+    forAll(pC, patchi)
+    {
+        const vectorField& p = pC[patchi];
+        if (p.empty())
+        {
+            continue;
+        }
+        const vectorField& t = tC[patchi];
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        const scalarField& magSf = patch.magSf();
+        const labelUList& faceCells = patch.faceCells();
+
+        scalar patchWork = 0;
+        forAll(p, i)
+        {
+            const label celli = faceCells[i];
+            const scalar work =
+                weight*(p[i] & t[i])*magSf[i]/law.rho(celli);
+            patchWork += work;
+            bodyWork_[cellBody_[celli]] += work;
+        }
+        patchWork_[patchi] += patchWork;
+    }
+}
+
+
+void Foam::boundaryWork::restoreOldTime()
+{
+    patchWork_ = patchWork0_;
+    bodyWork_ = bodyWork0_;
+}
+
+
+// ************************************************************************* //
