@@ -25,8 +25,12 @@ Description
     with a rigidWall patch, contact (touchSolid).
 
     A run that produces an inverted cell or a non-finite value stops with a
-    message naming the cell, its position and the time, after writing the
-    last good state (the law's state included).  The optional controlDict
+    message naming the cell, its position, J, the law's state, the nearest
+    boundary and body, the time, the Runge-Kutta stage and dt, after
+    writing the last good state (the law's state included) to a time folder
+    of its own (never overwriting one).  A run killed at any moment
+    restarts (startFrom latestTime) from the latest complete time folder:
+    an incomplete one is moved to <time>.incomplete.  The optional controlDict
     entry maxSteps stops (and writes) after that many steps.
 
     The log starts with a summary of the run, has a progress line (time,
@@ -47,6 +51,7 @@ Usage
 #include "runProgress.H"
 #include "declaredEntry.H"
 #include "sigFpe.H"
+#include "IFstream.H"
 
 // * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
 
@@ -59,6 +64,45 @@ namespace Foam
         "-", -1, entryLimits::above(-1, true)
     );
 }
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- Whether the field file exists (compressed or not) and was written to
+//  its end: its last non-blank line is OpenFOAM's closing divider
+//  '// ***...*** //', which every field file ends with, ascii or binary
+static bool completeFile(const fileName& path)
+{
+    if (!isFile(path))
+    {
+        return false;
+    }
+
+    IFstream is(path);
+    if (!is.good())
+    {
+        return false;
+    }
+
+    std::string line;
+    std::string last;
+    while (is.good())
+    {
+        is.getLine(line);
+        if (line.find_first_not_of(" \t\r") != std::string::npos)
+        {
+            last = line;
+        }
+    }
+
+    return last.compare(0, 8, "// *****") == 0
+        && last.find(" //", 8) != std::string::npos;
+}
+
+} // End namespace Foam
+
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -117,11 +161,14 @@ int main(int argc, char *argv[])
     sigFpe::ignore readingInput;
 
     // A run killed while writing leaves its last time folder cut short:
-    // the output fields are written before the state (lm, F, D, pointD).
-    // Before the run's Time selects the latest folder, set aside (rename
-    // to <time>.incomplete) every latest folder that lacks lm and U on
-    // some rank, saying so: the run starts from the latest complete one
-    // and writes the time again when it gets there
+    // touchFoam writes the state (lm, F, D, pointD, the law's state) first
+    // and the fields for viewing after it, U last, every file ending with
+    // OpenFOAM's closing divider line.  Before the run's Time selects the
+    // latest folder, set aside (rename to <time>.incomplete) every latest
+    // folder that is incomplete on some rank, saying so: the run starts
+    // from the latest complete one and writes the time again when it gets
+    // there.  Complete: U ends with the divider, or (no U: a folder made
+    // or edited by hand) lm, F, D and pointD all do
     {
         Foam::Time probe
         (
@@ -135,12 +182,14 @@ int main(int argc, char *argv[])
         );
         auto holdsState = [&](const word& timeName)
         {
-            return returnReduce
-            (
-                isFile(probe.path()/timeName/"lm")
-             || isFile(probe.path()/timeName/"U"),
-                andOp<bool>()
-            );
+            const fileName dir(probe.path()/timeName);
+            bool complete = isFile(dir/"U")
+              ? completeFile(dir/"U")
+              : (
+                    completeFile(dir/"lm") && completeFile(dir/"F")
+                 && completeFile(dir/"D") && completeFile(dir/"pointD")
+                );
+            return returnReduce(complete, andOp<bool>());
         };
 
         for (instantList times(probe.times()); times.size(); )
@@ -162,10 +211,11 @@ int main(int argc, char *argv[])
             mv(cut, aside);
 
             WarningInFunction
-                << "Time folder " << latest.name() << " holds neither lm"
-                << " nor U: it is incomplete (a run stopped while writing"
-                << " it). Moved to " << aside.name() << "; the run starts"
-                << " from the latest complete time folder" << endl;
+                << "Time folder " << latest.name() << " is incomplete: its"
+                << " U, written last, is missing or cut short (a run"
+                << " stopped while writing it). Moved to " << aside.name()
+                << "; the run starts from the latest complete time folder"
+                << endl;
 
             times = probe.times();
             if (times.size())
@@ -313,12 +363,13 @@ int main(int argc, char *argv[])
             const bool written = isDir(runTime.timePath());
             if (!written)
             {
-                solid.writeOutputFields();
-                IOstream::defaultPrecision
-                (
-                    max(IOstream::defaultPrecision(), statePrecision)
-                );
+                const unsigned int viewPrecision =
+                    IOstream::defaultPrecision();
+                solid.prepareWrite();
+                IOstream::defaultPrecision(max(viewPrecision, statePrecision));
                 runTime.writeNow();
+                IOstream::defaultPrecision(viewPrecision);
+                solid.writeOutputFields();
             }
 
             FatalErrorInFunction
@@ -335,21 +386,31 @@ int main(int argc, char *argv[])
 
         const unsigned int viewPrecision = IOstream::defaultPrecision();
 
-        if (step == maxSteps)
+        // The state first, then the fields for viewing with U last: a
+        // folder whose U is complete holds a complete state (the check
+        // of the latest folder above)
+        const bool writing = step == maxSteps || runTime.writeTime();
+        if (writing)
         {
-            Info<< "Reached maxSteps " << maxSteps << nl;
-            solid.writeOutputFields();
-            IOstream::defaultPrecision(max(viewPrecision, statePrecision));
-            runTime.writeAndEnd();
-        }
-        else if (runTime.writeTime())
-        {
-            solid.writeOutputFields();
+            solid.prepareWrite();
         }
 
         IOstream::defaultPrecision(max(viewPrecision, statePrecision));
-        runTime.write();
+        if (step == maxSteps)
+        {
+            Info<< "Reached maxSteps " << maxSteps << nl;
+            runTime.writeAndEnd();
+        }
+        else
+        {
+            runTime.write();
+        }
         IOstream::defaultPrecision(viewPrecision);
+
+        if (writing)
+        {
+            solid.writeOutputFields();
+        }
 
         runTime.printExecutionTime(Info);
 
