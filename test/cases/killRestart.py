@@ -8,7 +8,7 @@ uninterrupted run ends.
 The swinging cube at 8 x 8 x 8 cells (its tutorial's settings:
 neoHookean, writePrecision 12), written at every step (writeControl
 timeStep, writeInterval 1), so that a good share of the run's wall time
-is spent writing, to 60 steps (maxSteps):
+is spent writing, to 100 ms (144 steps):
   reference  the run uninterrupted;
   killed     the same set-up, started --kills times and killed with
              SIGKILL each time, then run to the end.  Kills alternate
@@ -27,7 +27,14 @@ Asserted:
   - every time folder of the reference exists in the killed run's case
     and its files lm, F, D, pointD and U are byte-identical to the
     reference's (the state at 17 digits, U at 12: equal bytes, equal
-    doubles of the state), including the last (step 60).
+    doubles of the state), including the last (100 ms), and the killed
+    run's case has no later time folder (it ended where the reference
+    did).  A kill after a
+    folder's state and before its U leaves a folder that is complete for
+    a restart; the restart writes its U (and the other fields for
+    viewing) from the state read: that U may differ from the reference's
+    only by the sign of zeros ('-0' written by the run on a symmetric
+    plane, '0' after the restart).
 Reported: the kill moments, the times each restart started from, the
 folders set aside.  Work folders: test/runs/killRestart/.
 """
@@ -47,11 +54,11 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 from touchfoam import cases, run, testing  # noqa: E402
 
 NAME = "killRestart"
-STEPS = 60
 FILES = ("lm", "F", "D", "pointD", "U")
-CONTROL = {"maxSteps": STEPS, "endTime": 1, "writeControl": "timeStep",
-           "writeInterval": 1, "writePrecision": 12}
+CONTROL = {"endTime": 0.1, "writeControl": "timeStep", "writeInterval": 1,
+           "writePrecision": 12}
 TIME = re.compile(r"^[0-9][0-9.e+-]*$")
+NEG_ZERO = re.compile(rb"(?<![0-9.eE])-0(?![0-9.eE])")
 
 
 def times(case):
@@ -132,7 +139,7 @@ def body(kills, seed):
         failures.append("no kill cut a time folder short (moments %s)"
                         % moments)
 
-    compared, differ = 0, []
+    compared, differ, rewritten = 0, [], []
     for name in times(reference):
         for field in FILES:
             a_path = os.path.join(reference, name, field)
@@ -145,19 +152,31 @@ def body(kills, seed):
             with open(b_path, "rb") as f:
                 b = f.read()
             compared += 1
-            if a != b:
+            if a != b and field == "U" and \
+                    NEG_ZERO.sub(b"0", a) == NEG_ZERO.sub(b"0", b):
+                # Written again by the restart from its state (the kill
+                # came after the state, before U): equal but for the sign
+                # of zeros on the symmetric planes (-0 in the run, 0 read
+                # back), which compare equal as doubles
+                rewritten.append(name)
+            elif a != b:
                 differ.append("%s/%s" % (name, field))
     if differ:
         failures.append("%d of the reference's files differ or are missing "
                         "in the killed run: %s" % (len(differ),
                                                    " ".join(differ[:8])))
     last = times(reference)[-1]
+    if times(case)[-1] != last:
+        failures.append("the killed run ended at %s, the reference at %s"
+                        % (times(case)[-1], last))
     lines.append("%d kills (%s), first steps of the runs to %s; %d folders cut short "
                  "and set aside (%s); %d files of %d folders byte-identical "
-                 "to the uninterrupted run's, the last %s"
+                 "to the uninterrupted run's (U of %s written again by the "
+                 "restart, equal but for the sign of zeros), the last %s"
                  % (kills, " ".join(moments), " ".join(starts[1:]), cut,
-                    " ".join(aside), compared - len(differ),
-                    len(times(reference)), last))
+                    " ".join(aside), compared - len(differ) - len(rewritten),
+                    len(times(reference)), " ".join(rewritten) or "none",
+                    last))
     return testing.verdict(lines, failures)
 
 

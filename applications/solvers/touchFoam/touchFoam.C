@@ -101,6 +101,51 @@ static bool completeFile(const fileName& path)
         && last.find(" //", 8) != std::string::npos;
 }
 
+
+//- The step dt shortened (or lengthened, up to twice) to land on the next
+//  write time of writeControl adjustableRunTime, as OpenFOAM's Time does,
+//  but counting the write times from t = 0, not from the run's start time:
+//  OpenFOAM's time to the next write, (index + 1) interval - (t - start),
+//  rounds otherwise after a restart than in the uninterrupted run, and the
+//  restarted run's steps then differ in the last bit (measured on the bar
+//  rebound tutorial: lm 2.6e-15 off at 50 us after a restart at 30 us).
+//  writeIndex is the index of the latest write time reached.
+static scalar stepToWrites
+(
+    const Time& runTime,
+    const scalar dt,
+    const label writeIndex
+)
+{
+    const scalar interval =
+        runTime.controlDict().get<scalar>("writeInterval");
+    // The product rounded before the difference, as in OpenFOAM's library
+    // (built without fused multiply-add; -march=native would fuse them)
+    const volatile scalar nextWrite = (writeIndex + 1)*interval;
+    const scalar toNextWrite = max(scalar(0), nextWrite - runTime.value());
+
+    const scalar nSteps = toNextWrite/dt;
+    if (!(nSteps < scalar(labelMax)))
+    {
+        return dt;
+    }
+
+    const scalar newDt = toNextWrite/max(label(1), label(std::round(nSteps)));
+
+    return newDt >= dt ? min(newDt, 2*dt) : max(newDt, 0.2*dt);
+}
+
+
+//- The index of the latest write time of adjustableRunTime that a step of
+//  dt ending at runTime's time reached, counted from t = 0 (a time within
+//  half a step of a write time is that write time, as in OpenFOAM)
+static label reachedWriteIndex(const Time& runTime, const scalar dt)
+{
+    const scalar interval =
+        runTime.controlDict().get<scalar>("writeInterval");
+    return label((runTime.value() + 0.5*dt)/interval);
+}
+
 } // End namespace Foam
 
 
@@ -168,7 +213,8 @@ int main(int argc, char *argv[])
     // folder that is incomplete on some rank, saying so: the run starts
     // from the latest complete one and writes the time again when it gets
     // there.  Complete: U ends with the divider, or (no U: a folder made
-    // or edited by hand) lm, F, D and pointD all do
+    // or edited by hand) lm, F, D and pointD all do, or the folder holds
+    // lm but no uniform/time (no run wrote it)
     {
         Foam::Time probe
         (
@@ -183,12 +229,24 @@ int main(int argc, char *argv[])
         auto holdsState = [&](const word& timeName)
         {
             const fileName dir(probe.path()/timeName);
-            bool complete = isFile(dir/"U")
-              ? completeFile(dir/"U")
-              : (
-                    completeFile(dir/"lm") && completeFile(dir/"F")
-                 && completeFile(dir/"D") && completeFile(dir/"pointD")
-                );
+            bool complete = false;
+            if (isFile(dir/"U"))
+            {
+                complete = completeFile(dir/"U");
+            }
+            else if (isFile(dir/"lm"))
+            {
+                // A run writes uniform/time before the fields: with it, a
+                // folder without U is complete if its state is; without
+                // it, the folder was made by hand, and the checks of the
+                // fields read judge it
+                complete =
+                    !isFile(dir/"uniform"/"time")
+                 || (
+                        completeFile(dir/"lm") && completeFile(dir/"F")
+                     && completeFile(dir/"D") && completeFile(dir/"pointD")
+                    );
+            }
             return returnReduce(complete, andOp<bool>());
         };
 
@@ -335,6 +393,22 @@ int main(int argc, char *argv[])
 
     readingInput.restore();
 
+    // A run stopped after the state of its last write time and before the
+    // fields for viewing (U last) leaves that folder without them; the
+    // restart from it writes them, from the state read
+    if
+    (
+        runTime.value() > 0
+     && returnReduce(!isFile(runTime.timePath()/"U"), orOp<bool>())
+    )
+    {
+        Info<< "Time folder " << runTime.timeName() << " holds the state but"
+            << " not U (a run stopped while writing it): writing U and the"
+            << " other fields for viewing there" << nl << endl;
+        solid.prepareWrite();
+        solid.writeOutputFields();
+    }
+
     // The state a restart reads (lm, F, D, pointD, the law's state: the
     // objects that write themselves with the time) is written with at
     // least 17 significant digits whatever writePrecision says, so that a
@@ -344,12 +418,41 @@ int main(int argc, char *argv[])
 
     runProgress progress(mesh, solid, maxSteps);
 
+    // The steps of writeControl adjustableRunTime land on the write times
+    // counted from t = 0, whatever time the run starts from (a restart
+    // takes the steps of the uninterrupted run, bit for bit); the write
+    // index of the start from the last step's dt (uniform/time)
+    const bool adjustableWrites =
+        runTime.controlDict().get<word>("writeControl") == "adjustableRunTime";
+    label writeIndex =
+        adjustableWrites && runTime.value() > 0
+      ? reachedWriteIndex(runTime, runTime.deltaTValue())
+      : 0;
+
     Info<< "Starting time loop\n" << endl;
 
     for (label step = 1; runTime.run(); ++step)
     {
-        runTime.setDeltaT(solid.stableDeltaT());
+        if (adjustableWrites)
+        {
+            runTime.setDeltaT
+            (
+                stepToWrites(runTime, solid.stableDeltaT(), writeIndex),
+                false
+            );
+        }
+        else
+        {
+            runTime.setDeltaT(solid.stableDeltaT());
+        }
         ++runTime;
+        if (adjustableWrites)
+        {
+            writeIndex = max
+            (
+                writeIndex, reachedWriteIndex(runTime, runTime.deltaTValue())
+            );
+        }
         const scalar dt = runTime.deltaTValue();
 
         Info<< "Time = " << runTime.timeName() << "  deltaT = " << dt << nl;
