@@ -240,11 +240,16 @@ int main(int argc, char *argv[])
                 // folder without U is complete if its state is; without
                 // it, the folder was made by hand, and the checks of the
                 // fields read judge it
+                // (D and pointD, or their former names u and pointU)
                 complete =
                     !isFile(dir/"uniform"/"time")
                  || (
                         completeFile(dir/"lm") && completeFile(dir/"F")
-                     && completeFile(dir/"D") && completeFile(dir/"pointD")
+                     && (completeFile(dir/"D") || completeFile(dir/"u"))
+                     && (
+                            completeFile(dir/"pointD")
+                         || completeFile(dir/"pointU")
+                        )
                     );
             }
             return returnReduce(complete, andOp<bool>());
