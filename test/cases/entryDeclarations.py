@@ -48,6 +48,10 @@ STRUCTURAL = {
                    " read again to integrate the wall's table",
     "interpolationScheme": "a Function1 table's own coefficient"
                            " (OpenFOAM's), as above",
+    "writeControl": "OpenFOAM's Time control in system/controlDict, read"
+                    " again so that touchFoam lands its steps on the write"
+                    " times counted from t = 0",
+    "writeInterval": "OpenFOAM's Time control, as above",
     "listEntries": "a command-line option, not a dictionary entry",
     "markdown": "a command-line option, not a dictionary entry",
 }

@@ -79,8 +79,8 @@ def body():
                       timeout=testing.RUN_TIMEOUT)
         with open(log) as f:
             text = " ".join(f.read().split())
-        if not re.search(r"Time folder 0\.003 holds neither lm nor U: it is "
-                         r"incomplete .* Moved to 0\.003\.incomplete", text):
+        if not re.search(r"Time folder 0\.003 is incomplete: its U, written "
+                         r"last, is missing .* Moved to 0\.003\.incomplete", text):
             failures.append("%s: no warning that 0.003 is incomplete"
                             % tutorial)
         same = []

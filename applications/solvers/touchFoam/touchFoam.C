@@ -25,8 +25,12 @@ Description
     with a rigidWall patch, contact (touchSolid).
 
     A run that produces an inverted cell or a non-finite value stops with a
-    message naming the cell, its position and the time, after writing the
-    last good state (the law's state included).  The optional controlDict
+    message naming the cell, its position, J, the law's state, the nearest
+    boundary and body, the time, the Runge-Kutta stage and dt, after
+    writing the last good state (the law's state included) to a time folder
+    of its own (never overwriting one).  A run killed at any moment
+    restarts (startFrom latestTime) from the latest complete time folder:
+    an incomplete one is moved to <time>.incomplete.  The optional controlDict
     entry maxSteps stops (and writes) after that many steps.
 
     The log starts with a summary of the run, has a progress line (time,
@@ -47,6 +51,7 @@ Usage
 #include "runProgress.H"
 #include "declaredEntry.H"
 #include "sigFpe.H"
+#include "IFstream.H"
 
 // * * * * * * * * * * * * * * * * Entries  * * * * * * * * * * * * * * * * //
 
@@ -59,6 +64,90 @@ namespace Foam
         "-", -1, entryLimits::above(-1, true)
     );
 }
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- Whether the field file exists (compressed or not) and was written to
+//  its end: its last non-blank line is OpenFOAM's closing divider
+//  '// ***...*** //', which every field file ends with, ascii or binary
+static bool completeFile(const fileName& path)
+{
+    if (!isFile(path))
+    {
+        return false;
+    }
+
+    IFstream is(path);
+    if (!is.good())
+    {
+        return false;
+    }
+
+    std::string line;
+    std::string last;
+    while (is.good())
+    {
+        is.getLine(line);
+        if (line.find_first_not_of(" \t\r") != std::string::npos)
+        {
+            last = line;
+        }
+    }
+
+    return last.compare(0, 8, "// *****") == 0
+        && last.find(" //", 8) != std::string::npos;
+}
+
+
+//- The step dt shortened (or lengthened, up to twice) to land on the next
+//  write time of writeControl adjustableRunTime, as OpenFOAM's Time does,
+//  but counting the write times from t = 0, not from the run's start time:
+//  OpenFOAM's time to the next write, (index + 1) interval - (t - start),
+//  rounds otherwise after a restart than in the uninterrupted run, and the
+//  restarted run's steps then differ in the last bit (measured on the bar
+//  rebound tutorial: lm 2.6e-15 off at 50 us after a restart at 30 us).
+//  writeIndex is the index of the latest write time reached.
+static scalar stepToWrites
+(
+    const Time& runTime,
+    const scalar dt,
+    const label writeIndex
+)
+{
+    const scalar interval =
+        runTime.controlDict().get<scalar>("writeInterval");
+    // The product rounded before the difference, as in OpenFOAM's library
+    // (built without fused multiply-add; -march=native would fuse them)
+    const volatile scalar nextWrite = (writeIndex + 1)*interval;
+    const scalar toNextWrite = max(scalar(0), nextWrite - runTime.value());
+
+    const scalar nSteps = toNextWrite/dt;
+    if (!(nSteps < scalar(labelMax)))
+    {
+        return dt;
+    }
+
+    const scalar newDt = toNextWrite/max(label(1), label(std::round(nSteps)));
+
+    return newDt >= dt ? min(newDt, 2*dt) : max(newDt, 0.2*dt);
+}
+
+
+//- The index of the latest write time of adjustableRunTime that a step of
+//  dt ending at runTime's time reached, counted from t = 0 (a time within
+//  half a step of a write time is that write time, as in OpenFOAM)
+static label reachedWriteIndex(const Time& runTime, const scalar dt)
+{
+    const scalar interval =
+        runTime.controlDict().get<scalar>("writeInterval");
+    return label((runTime.value() + 0.5*dt)/interval);
+}
+
+} // End namespace Foam
+
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -117,11 +206,15 @@ int main(int argc, char *argv[])
     sigFpe::ignore readingInput;
 
     // A run killed while writing leaves its last time folder cut short:
-    // the output fields are written before the state (lm, F, D, pointD).
-    // Before the run's Time selects the latest folder, set aside (rename
-    // to <time>.incomplete) every latest folder that lacks lm and U on
-    // some rank, saying so: the run starts from the latest complete one
-    // and writes the time again when it gets there
+    // touchFoam writes the state (lm, F, D, pointD, the law's state) first
+    // and the fields for viewing after it, U last, every file ending with
+    // OpenFOAM's closing divider line.  Before the run's Time selects the
+    // latest folder, set aside (rename to <time>.incomplete) every latest
+    // folder that is incomplete on some rank, saying so: the run starts
+    // from the latest complete one and writes the time again when it gets
+    // there.  Complete: U ends with the divider, or (no U: a folder made
+    // or edited by hand) lm, F, D and pointD all do, or the folder holds
+    // lm but no uniform/time (no run wrote it)
     {
         Foam::Time probe
         (
@@ -135,12 +228,31 @@ int main(int argc, char *argv[])
         );
         auto holdsState = [&](const word& timeName)
         {
-            return returnReduce
-            (
-                isFile(probe.path()/timeName/"lm")
-             || isFile(probe.path()/timeName/"U"),
-                andOp<bool>()
-            );
+            const fileName dir(probe.path()/timeName);
+            bool complete = false;
+            if (isFile(dir/"U"))
+            {
+                complete = completeFile(dir/"U");
+            }
+            else if (isFile(dir/"lm"))
+            {
+                // A run writes uniform/time before the fields: with it, a
+                // folder without U is complete if its state is; without
+                // it, the folder was made by hand, and the checks of the
+                // fields read judge it
+                // (D and pointD, or their former names u and pointU)
+                complete =
+                    !isFile(dir/"uniform"/"time")
+                 || (
+                        completeFile(dir/"lm") && completeFile(dir/"F")
+                     && (completeFile(dir/"D") || completeFile(dir/"u"))
+                     && (
+                            completeFile(dir/"pointD")
+                         || completeFile(dir/"pointU")
+                        )
+                    );
+            }
+            return returnReduce(complete, andOp<bool>());
         };
 
         for (instantList times(probe.times()); times.size(); )
@@ -162,10 +274,11 @@ int main(int argc, char *argv[])
             mv(cut, aside);
 
             WarningInFunction
-                << "Time folder " << latest.name() << " holds neither lm"
-                << " nor U: it is incomplete (a run stopped while writing"
-                << " it). Moved to " << aside.name() << "; the run starts"
-                << " from the latest complete time folder" << endl;
+                << "Time folder " << latest.name() << " is incomplete: its"
+                << " U, written last, is missing or cut short (a run"
+                << " stopped while writing it). Moved to " << aside.name()
+                << "; the run starts from the latest complete time folder"
+                << endl;
 
             times = probe.times();
             if (times.size())
@@ -285,6 +398,22 @@ int main(int argc, char *argv[])
 
     readingInput.restore();
 
+    // A run stopped after the state of its last write time and before the
+    // fields for viewing (U last) leaves that folder without them; the
+    // restart from it writes them, from the state read
+    if
+    (
+        runTime.value() > 0
+     && returnReduce(!isFile(runTime.timePath()/"U"), orOp<bool>())
+    )
+    {
+        Info<< "Time folder " << runTime.timeName() << " holds the state but"
+            << " not U (a run stopped while writing it): writing U and the"
+            << " other fields for viewing there" << nl << endl;
+        solid.prepareWrite();
+        solid.writeOutputFields();
+    }
+
     // The state a restart reads (lm, F, D, pointD, the law's state: the
     // objects that write themselves with the time) is written with at
     // least 17 significant digits whatever writePrecision says, so that a
@@ -294,12 +423,41 @@ int main(int argc, char *argv[])
 
     runProgress progress(mesh, solid, maxSteps);
 
+    // The steps of writeControl adjustableRunTime land on the write times
+    // counted from t = 0, whatever time the run starts from (a restart
+    // takes the steps of the uninterrupted run, bit for bit); the write
+    // index of the start from the last step's dt (uniform/time)
+    const bool adjustableWrites =
+        runTime.controlDict().get<word>("writeControl") == "adjustableRunTime";
+    label writeIndex =
+        adjustableWrites && runTime.value() > 0
+      ? reachedWriteIndex(runTime, runTime.deltaTValue())
+      : 0;
+
     Info<< "Starting time loop\n" << endl;
 
     for (label step = 1; runTime.run(); ++step)
     {
-        runTime.setDeltaT(solid.stableDeltaT());
+        if (adjustableWrites)
+        {
+            runTime.setDeltaT
+            (
+                stepToWrites(runTime, solid.stableDeltaT(), writeIndex),
+                false
+            );
+        }
+        else
+        {
+            runTime.setDeltaT(solid.stableDeltaT());
+        }
         ++runTime;
+        if (adjustableWrites)
+        {
+            writeIndex = max
+            (
+                writeIndex, reachedWriteIndex(runTime, runTime.deltaTValue())
+            );
+        }
         const scalar dt = runTime.deltaTValue();
 
         Info<< "Time = " << runTime.timeName() << "  deltaT = " << dt << nl;
@@ -313,12 +471,13 @@ int main(int argc, char *argv[])
             const bool written = isDir(runTime.timePath());
             if (!written)
             {
-                solid.writeOutputFields();
-                IOstream::defaultPrecision
-                (
-                    max(IOstream::defaultPrecision(), statePrecision)
-                );
+                const unsigned int viewPrecision =
+                    IOstream::defaultPrecision();
+                solid.prepareWrite();
+                IOstream::defaultPrecision(max(viewPrecision, statePrecision));
                 runTime.writeNow();
+                IOstream::defaultPrecision(viewPrecision);
+                solid.writeOutputFields();
             }
 
             FatalErrorInFunction
@@ -335,21 +494,31 @@ int main(int argc, char *argv[])
 
         const unsigned int viewPrecision = IOstream::defaultPrecision();
 
-        if (step == maxSteps)
+        // The state first, then the fields for viewing with U last: a
+        // folder whose U is complete holds a complete state (the check
+        // of the latest folder above)
+        const bool writing = step == maxSteps || runTime.writeTime();
+        if (writing)
         {
-            Info<< "Reached maxSteps " << maxSteps << nl;
-            solid.writeOutputFields();
-            IOstream::defaultPrecision(max(viewPrecision, statePrecision));
-            runTime.writeAndEnd();
-        }
-        else if (runTime.writeTime())
-        {
-            solid.writeOutputFields();
+            solid.prepareWrite();
         }
 
         IOstream::defaultPrecision(max(viewPrecision, statePrecision));
-        runTime.write();
+        if (step == maxSteps)
+        {
+            Info<< "Reached maxSteps " << maxSteps << nl;
+            runTime.writeAndEnd();
+        }
+        else
+        {
+            runTime.write();
+        }
         IOstream::defaultPrecision(viewPrecision);
+
+        if (writing)
+        {
+            solid.writeOutputFields();
+        }
 
         runTime.printExecutionTime(Info);
 

@@ -282,11 +282,9 @@ bool Foam::touchSolid::advance(const scalar dt)
         // Every rank restores, so that all of them retry the step alike
         if (!returnReduce(invalidCell_ < 0, andOp<bool>()))
         {
-            const label celli = invalidCell_;
-            if (celli >= 0)
-            {
-                reportInvalidCell(celli, stage, dt);
-            }
+            // Every rank takes part (the nearest boundary and the body
+            // are searched across ranks); the ranks with a cell report
+            reportInvalidCell(invalidCell_, stage, dt);
 
             restoreOldTime();
             return false;

@@ -9,7 +9,9 @@ Description
     (unused Coeffs, wave speeds no material has, an initial F whose stress
     overflows, a CFL number above the measured stable one), an initial
     velocity that a clamped patch or a symmetric plane forbids, and the
-    report of a cell a step made invalid.
+    report of a cell a step made invalid: where it is (label, reference and
+    current centre, nearest boundary, body), what it holds (J, F, |lm|, the
+    law's state) and when (step, dt, Runge-Kutta stage).
 
 \*---------------------------------------------------------------------------*/
 
@@ -18,6 +20,7 @@ Description
 #include "emptyFvPatch.H"
 #include "clampedFvPatchVectorField.H"
 #include "symmetricPlaneFvPatchVectorField.H"
+#include "regionSplit.H"
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
@@ -155,27 +158,69 @@ void Foam::touchSolid::reportInvalidCell
     const scalar dt
 ) const
 {
-    // The boundary face nearest to the cell in the reference configuration
-    const point& x0 = mesh_.C()[celli];
+    // The reference centres of every rank's invalid cell (none: a rank
+    // without one), known to all ranks: the nearest boundary face may lie
+    // on another rank than the cell
+    List<point> x0s(Pstream::nProcs(), point::max);
+    if (celli >= 0)
+    {
+        x0s[Pstream::myProcNo()] = mesh_.C()[celli];
+    }
+    Pstream::gatherList(x0s);
+    Pstream::scatterList(x0s);
+
+    // The bodies: regions of cells connected through faces (across ranks).
+    // Several (a bar and a ring meshed apart, two bodies that touch) make
+    // 'which one' part of 'where'
+    const regionSplit bodies(mesh_);
+
     word nearestPatch("none");
     scalar nearestDistance = GREAT;
-    for (const fvPatch& patch : mesh_.boundary())
+    forAll(x0s, proci)
     {
-        if (patch.coupled() || isA<emptyFvPatch>(patch))
+        if (x0s[proci] == point::max)
         {
             continue;
         }
-        for (const point& c : patch.Cf())
+
+        // The boundary face nearest to the cell in the reference
+        // configuration, over the faces of all ranks; the patches other
+        // than processor ones are the same on every rank, in one order
+        scalar distance = GREAT;
+        label patchi = labelMax;
+        for (const fvPatch& patch : mesh_.boundary())
         {
-            const scalar d = mag(c - x0);
-            if (d < nearestDistance)
+            if (patch.coupled() || isA<emptyFvPatch>(patch))
             {
-                nearestDistance = d;
-                nearestPatch = patch.name();
+                continue;
             }
+            for (const point& c : patch.Cf())
+            {
+                const scalar d = mag(c - x0s[proci]);
+                if (d < distance)
+                {
+                    distance = d;
+                    patchi = patch.index();
+                }
+            }
+        }
+        const scalar least = returnReduce(distance, minOp<scalar>());
+        const label nearest =
+            returnReduce(distance == least ? patchi : labelMax, minOp<label>());
+
+        if (proci == Pstream::myProcNo() && nearest < mesh_.boundary().size())
+        {
+            nearestPatch = mesh_.boundary()[nearest].name();
+            nearestDistance = least;
         }
     }
 
+    if (celli < 0)
+    {
+        return;
+    }
+
+    const point& x0 = mesh_.C()[celli];
     const tensor& F = F_[celli];
     const scalar t = mesh_.time().value();
 
@@ -195,7 +240,35 @@ void Foam::touchSolid::reportInvalidCell
         << t - dt + rungeKutta_.stageTime(stage)*dt << ')'
         << nl << "    nearest boundary " << nearestPatch << " ("
         << nearestDistance << " m from the reference centre)"
-        << nl << "    law              " << law_->type() << endl;
+        << nl << "    body             " << bodies[celli] << " of "
+        << bodies.nRegions() << " (regions of cells connected by faces)"
+        << nl << "    law              " << law_->type();
+
+    // The law's state in the cell, as the stage left it: the fields a law
+    // with state writes with the time (vonMisesPlastic: epsilonP, CpInv;
+    // a zoned law's several laws alike)
+    if (law_->hasState())
+    {
+        Pout<< nl << "    law state       ";
+        for (const word& name : mesh_.sortedNames<volScalarField>())
+        {
+            const volScalarField& f = mesh_.lookupObject<volScalarField>(name);
+            if (f.writeOpt() == IOobject::AUTO_WRITE)
+            {
+                Pout<< ' ' << name << ' ' << f[celli];
+            }
+        }
+        for (const word& name : mesh_.sortedNames<volSymmTensorField>())
+        {
+            const volSymmTensorField& f =
+                mesh_.lookupObject<volSymmTensorField>(name);
+            if (f.writeOpt() == IOobject::AUTO_WRITE)
+            {
+                Pout<< ' ' << name << ' ' << f[celli];
+            }
+        }
+    }
+    Pout<< endl;
 }
 
 

@@ -172,6 +172,15 @@ void Foam::touchSolid::writeSummary(Ostream& os) const
 }
 
 
+void Foam::touchSolid::prepareWrite()
+{
+    // F and D write themselves with the state; J, sigma, sigmaEq and
+    // pressure take their patches from F's
+    cellValuesOnPatches(F_);
+    cellValuesOnPatches(D_);
+}
+
+
 void Foam::touchSolid::writeOutputFields()
 {
     const word& timeName = mesh_.time().timeName();
@@ -204,39 +213,11 @@ void Foam::touchSolid::writeOutputFields()
             *law_, F_.primitiveField(), P_.primitiveFieldRef()
         );
     }
-    // F and D write themselves with the state; J, sigma, sigmaEq and
-    // pressure take their patches from F's and P's
-    cellValuesOnPatches(F_);
-    cellValuesOnPatches(D_);
+    // J, sigma, sigmaEq and pressure take their patches from F's (set by
+    // prepareWrite) and P's
     cellValuesOnPatches(P_);
     P_.instance() = timeName;
     P_.write();
-
-    {
-        // lm/rho of the lm written with it, cell by cell and on the patches
-        // (with the dimensions of a velocity: a restart from a folder
-        // whose lm is missing reads this U, and checks them)
-        volVectorField U(outputIO("U"), lm_/law_->materialRho(0));
-        if (!law_->uniformMaterial())
-        {
-            // Each cell's own density, and the patch cell's on a patch
-            U.primitiveFieldRef() = lm_.primitiveField()/law_->cellRho();
-            forAll(U.boundaryField(), patchi)
-            {
-                const labelUList& faceCells =
-                    mesh_.boundary()[patchi].faceCells();
-                fvPatchVectorField& Up = U.boundaryFieldRef()[patchi];
-                forAll(Up, i)
-                {
-                    Up[i] =
-                        lm_.boundaryField()[patchi][i]
-                       /law_->rho(faceCells[i]);
-                }
-            }
-        }
-        U.dimensions().reset(dimVelocity);
-        U.write();
-    }
 
     {
         volScalarField J(outputIO("J"), det(F_));
@@ -288,6 +269,33 @@ void Foam::touchSolid::writeOutputFields()
     }
 
     writeContact(outputIO("contact"));
+
+    // U last: a folder with a complete U was written to the end
+    {
+        // lm/rho of the lm written with it, cell by cell and on the patches
+        // (with the dimensions of a velocity: a restart from a folder
+        // whose lm is missing reads this U, and checks them)
+        volVectorField U(outputIO("U"), lm_/law_->materialRho(0));
+        if (!law_->uniformMaterial())
+        {
+            // Each cell's own density, and the patch cell's on a patch
+            U.primitiveFieldRef() = lm_.primitiveField()/law_->cellRho();
+            forAll(U.boundaryField(), patchi)
+            {
+                const labelUList& faceCells =
+                    mesh_.boundary()[patchi].faceCells();
+                fvPatchVectorField& Up = U.boundaryFieldRef()[patchi];
+                forAll(Up, i)
+                {
+                    Up[i] =
+                        lm_.boundaryField()[patchi][i]
+                       /law_->rho(faceCells[i]);
+                }
+            }
+        }
+        U.dimensions().reset(dimVelocity);
+        U.write();
+    }
 }
 
 
