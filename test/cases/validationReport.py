@@ -24,7 +24,8 @@ hold) plus one for plantedNone, every row 'pass' or '**FAIL**'; the
 planted failing check and plantedNone's 'no check recorded' row are
 FAIL and come before every pass row; swingingCube's rows pass (the
 study's own reference, order >= 1.8 on 8/16); the studies' table gives
-each study's verdict (plantedFail: FAIL by its exit status) and run time
+each study's verdict (plantedFail: FAIL by its exit status, plantedNone:
+FAIL, no check recorded) and run time
 and a total row whose time is at least the sum of the studies'.  About a
 minute (the swinging cube on 4^3, 8^3, 16^3 cells).
 """
@@ -133,9 +134,10 @@ def body():
                      "%s %s" % (r[1].split(":")[0], r[2]) for r in cube)))
     studies = {r[0].split("]")[0].lstrip("["): r for r in
                section(report, "Studies")}
-    if not studies.get("plantedFail", [""] * 3)[2].startswith("FAIL"):
-        failures.append("plantedFail's verdict is not FAIL: %s"
-                        % studies.get("plantedFail"))
+    for study in ("plantedFail", "plantedNone"):
+        if not studies.get(study, [""] * 3)[2].startswith("FAIL"):
+            failures.append("%s's verdict is not FAIL: %s"
+                            % (study, studies.get(study)))
     times = [int(studies[s][4]) for s in ("swingingCube", "plantedFail",
                                           "plantedNone") if s in studies]
     total = studies.get("total")

@@ -83,7 +83,7 @@ def analyse(args):
                 exp["max"] is None or last <= exp["max"])
             all_pass &= ok
             checks.record(HERE, "%s %s: observed L2 order (finest pair)"
-                          % (scheme, comp), last, "%g" % exp["min"]
+                          % (scheme, comp), last, ">= %g" % exp["min"]
                           if exp["max"] is None else "[%g, %g]"
                           % (exp["min"], exp["max"]), ok,
                           "meshes %s" % " ".join(map(str, args.meshes)))
