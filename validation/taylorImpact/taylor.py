@@ -430,7 +430,7 @@ def record_checks(out, res):
     n, fine = list(out["meshes"].items())[-1]
     sizes = " ".join(out["meshes"])
     small = ("" if len(out["meshes"]) >= 3 and int(n) >= 9 else
-             "meshes n %s, coarser or fewer than the published n 3 6 9; "
+             "meshes n %s, coarser or fewer than the published n 3 6 9"
              % sizes)
     for key, (lo, hi) in LITERATURE.items():
         checks.record(HERE, "n%s %s" % (n, key), fine[key],
@@ -442,8 +442,9 @@ def record_checks(out, res):
                       "nearer the range)" % key,
                       " ".join("%.4g" % v for v in c["values"]),
                       "shrinking, approaching", ok,
-                      "" if ok else small + "needs three meshes"
-                      if len(c["values"]) < 3 else small)
+                      "" if ok else "; ".join(m for m in (
+                          small, "needs three meshes"
+                          if len(c["values"]) < 3 else "") if m))
     for f, ok in res["checkerFree"].items():
         checks.record(HERE, "n%s checker-board C of %s" % (n, f),
                       fine["checkerBoard"][f]["allCells"],

@@ -101,7 +101,7 @@ def table(folders):
     and the number of failing rows."""
     rows = []
     for folder in folders:
-        study = os.path.basename(os.path.normpath(folder))
+        study = os.path.basename(os.path.abspath(folder))
         checks = load(folder)
         if not checks:
             rows.append((study, "(no check recorded: %s missing or empty)"
