@@ -22,7 +22,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 
 import numpy as np  # noqa: E402
 
-from touchfoam import analytic, checks, foamfile, gmsh, mesh, monitor  # noqa: E402
+from touchfoam import analytic, checks, foamfile, gmsh  # noqa: E402
+from touchfoam import mesh, monitor  # noqa: E402
 from touchfoam import run as frun  # noqa: E402
 from touchfoam.cases import prepare  # noqa: E402
 
