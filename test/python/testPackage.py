@@ -22,7 +22,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 
 import numpy as np  # noqa: E402
 
-from touchfoam import analytic, foamfile, gmsh, mesh, monitor  # noqa: E402
+from touchfoam import analytic, checks, foamfile, gmsh  # noqa: E402
+from touchfoam import mesh, monitor  # noqa: E402
 from touchfoam import run as frun  # noqa: E402
 from touchfoam.cases import prepare  # noqa: E402
 
@@ -240,6 +241,34 @@ def monitor_reader(tmp):
     assert list(m["Time"]) == [0.0, 1.0, 2.0, 2.5], m["Time"]
     assert m["p"].shape == (4, 3) and m["L"].shape == (4, 3)
     return "restart folders joined"
+
+
+@test
+def validation_checks(tmp):
+    """checks.record rewrites checks.json on a run's first record, the
+    status is 1 with a failing check or none, and the table puts FAIL rows
+    (and a study without checks) first."""
+    a, b, c = (os.path.join(tmp, s) for s in ("a", "b", "c"))
+    for d in (a, b, c):
+        os.makedirs(d)
+    with open(checks.path(a), "w") as f:
+        f.write('[{"quantity": "stale"}]')
+    assert checks.record(a, "x", np.float64(0.5), "<= 1", True) is True
+    checks.record(a, "y", 2, "<= 1", False, "a | note")
+    checks.record(b, "z", 1e-12, 1e-10, True)
+    rows = checks.load(a)
+    assert [r["quantity"] for r in rows] == ["x", "y"], rows
+    assert rows[0]["measured"] == 0.5 and rows[1]["note"] == "a | note"
+    assert (checks.status(a), checks.status(b), checks.status(c)) == (1, 0, 1)
+    lines, failed, total = checks.table([b, a, c])
+    assert (failed, total) == (2, 4), (failed, total)
+    order = [line.split(" | ")[:2] for line in lines[2:]]
+    assert [r[0] for r in order] == ["| a", "| c", "| b", "| a"], order
+    assert [order[i][1] for i in (0, 2, 3)] == ["y", "z", "x"], order
+    assert "**FAIL**" in lines[2] and "no check" in lines[3], lines
+    assert "pass" in lines[4] and "1e-12" in lines[4] and "1e-10" in lines[4]
+    assert "a \\| note" in lines[2], lines[2]
+    return "%d rows, %d FAIL first" % (total, failed)
 
 
 @test

@@ -104,7 +104,7 @@ from avcAnalysis import (CASES, HERE, MIN_TIMED, RUN_INFO, TWIST_BAND,
                          case_dir, closure, label, one_at_a_time,
                          parse_label, sweep_rows)
 from avcReport import plot, recommendation_text, write_markdown
-from touchfoam import cases, postprocess, run
+from touchfoam import cases, checks, postprocess, run
 import stabilityMap  # validation/stabilityMap
 import twist  # validation/twistingColumn
 
@@ -361,6 +361,15 @@ def main():
         print("\n%s\n%s" % (name, recommendation_text(name, out)))
     ok = all(out.get("energyCheck") and out["energyCheck"]["pass"]
              for out in results["cases"].values())
+    for name, out in results["cases"].items():
+        chk = out.get("energyCheck") or {}
+        checks.record(HERE, "%s recommended %s: max energy growth / E0"
+                      % (name, chk.get("setting")),
+                      (chk.get("energy") or {}).get("maxGrowth"),
+                      "<= %g" % twist.ENERGY_TOL, bool(chk.get("pass")),
+                      "run failed: %s" % chk["runError"]
+                      if chk.get("runError") else
+                      "" if chk else "no recommended setting")
     print("\n%s: %s (%.0f s)" % ("PASS" if ok else "FAIL", os.path.join(
         out_dir, "results.md"), results["duration"]))
     return 0 if ok else 1

@@ -51,7 +51,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
 
 from touchfoam.provenance import log_steps_and_clock, build_label  # noqa: E402
-from touchfoam import postprocess, run  # noqa: E402
+from touchfoam import checks, postprocess, run  # noqa: E402
 from touchfoam.foamfile import read_field  # noqa: E402
 from touchfoam.mesh import PolyMesh  # noqa: E402
 from touchfoam.monitor import read_monitor  # noqa: E402
@@ -350,7 +350,31 @@ def main():
     plot(out, os.path.join(HERE, "displacement.png"))
     with open(os.path.join(HERE, "results.md")) as f:
         print(f.read())
-    return 0
+    record_checks(out)
+    return checks.status(HERE)
+
+
+def record_checks(out):
+    """The verdicts of results.md in checks.json (validation/Allrun)."""
+    for n, r in out["meshes"].items():
+        if "contactStartMinusGapOverV0" in r:
+            checks.record(HERE, "n%s contact start t_c - gap/v0 [s]" % n,
+                          r["contactStartMinusGapOverV0"],
+                          "in [0, dt = %.3g]" % r["contactStep_dt"],
+                          r["contactPass"])
+        else:
+            checks.record(HERE, "n%s contact" % n, "none", "a contact",
+                          False)
+        checks.record(HERE, "n%s max energy change per step / E0" % n,
+                      r["maxEnergyChangePerStep_E0"],
+                      "<= %g" % LIMITS["energyIncrease"], r["energyPass"])
+        checks.record(HERE, "n%s flight: min p_y/|p_y(0)| after separation"
+                      % n, r.get("minPyAfterSeparation_py0"), "> 0, no face "
+                      "in contact", r.get("flightPass", False))
+    a = out["agreement"]
+    checks.record(HERE, "separation time |coarse - fine| / fine",
+                  a["separation"], "<= %g" % LIMITS["separationAgreement"],
+                  a["pass"], "between the two meshes of this run")
 
 
 if __name__ == "__main__":

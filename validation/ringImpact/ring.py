@@ -44,7 +44,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
 
 from touchfoam.provenance import log_steps_and_clock, build_label  # noqa: E402
-from touchfoam import postprocess, run  # noqa: E402
+from touchfoam import checks, postprocess, run  # noqa: E402
 from touchfoam.figures import slab_thickness  # noqa: E402
 from touchfoam.mesh import PolyMesh  # noqa: E402
 from touchfoam.monitor import read_monitor  # noqa: E402
@@ -249,7 +249,21 @@ def main():
     plot(meshes, os.path.join(HERE, "momentum.png"))
     with open(os.path.join(HERE, "results.md")) as f:
         print(f.read())
-    return 0
+    record_checks(out)
+    return checks.status(HERE)
+
+
+def record_checks(out):
+    """The verdicts of results.md in checks.json (validation/Allrun)."""
+    for n, r in out["meshes"].items():
+        checks.record(HERE, "n%s max |p_x|, |p_z| / |p_y(0)|" % n,
+                      max(r["maxPx_py0"], r["maxPz_py0"]), "< %g" % LIMIT,
+                      r["linearPass"])
+        checks.record(HERE, "n%s max |L_i| / (|p_y(0)| R_outer)" % n,
+                      max(r["maxL_py0R"]), "< %g" % LIMIT, r["angularPass"])
+        checks.record(HERE, "n%s p_y reverses (the ring rebounds)" % n,
+                      r["pyEnd_py0"], "p_y end > 0 > p_y(0)",
+                      r["pyReverses"], "p_y end / |p_y(0)|")
 
 
 if __name__ == "__main__":

@@ -32,7 +32,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
 
-from touchfoam import analytic, cases, postprocess, run  # noqa: E402
+from touchfoam import analytic, cases, checks, postprocess, run  # noqa: E402
 
 T_END = 0.004
 # scheme -> component kind (v or P) -> accepted order on the finest pair
@@ -82,6 +82,11 @@ def analyse(args):
             ok = last is not None and last >= exp["min"] and (
                 exp["max"] is None or last <= exp["max"])
             all_pass &= ok
+            checks.record(HERE, "%s %s: observed L2 order (finest pair)"
+                          % (scheme, comp), last, ">= %g" % exp["min"]
+                          if exp["max"] is None else "[%g, %g]"
+                          % (exp["min"], exp["max"]), ok,
+                          "meshes %s" % " ".join(map(str, args.meshes)))
             per_comp[comp] = {
                 "L2": e,
                 "relMax": [x[comp]["relMax"] for x in errs],

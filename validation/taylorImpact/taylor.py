@@ -71,7 +71,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
 
 from touchfoam.provenance import log_steps_and_clock  # noqa: E402
-from touchfoam import run  # noqa: E402
+from touchfoam import checks, run  # noqa: E402
 from touchfoam.foamfile import read_dict, read_field  # noqa: E402
 from touchfoam.mesh import PolyMesh  # noqa: E402
 from touchfoam.monitor import read_monitor  # noqa: E402
@@ -420,7 +420,38 @@ def acceptance(out):
                        and all(res["converging"].values())
                        and all(res["checkerFree"].values())
                        and res["energyGrowthBelow1e-3"])
+    record_checks(out, res)
     return res
+
+
+def record_checks(out, res):
+    """The verdicts of acceptance() in checks.json (validation/Allrun);
+    on meshes coarser than the published ones (n 3 6 9) a fail says so."""
+    n, fine = list(out["meshes"].items())[-1]
+    sizes = " ".join(out["meshes"])
+    small = ("" if len(out["meshes"]) >= 3 and int(n) >= 9 else
+             "meshes n %s, coarser or fewer than the published n 3 6 9"
+             % sizes)
+    for key, (lo, hi) in LITERATURE.items():
+        checks.record(HERE, "n%s %s" % (n, key), fine[key],
+                      "[%g, %g] (literature)" % (lo, hi), res[key],
+                      "" if res[key] else small)
+    for key, ok in res["converging"].items():
+        c = out["convergence"][key]
+        checks.record(HERE, "%s converging (differences shrink, finest "
+                      "nearer the range)" % key,
+                      " ".join("%.4g" % v for v in c["values"]),
+                      "shrinking, approaching", ok,
+                      "" if ok else "; ".join(m for m in (
+                          small, "needs three meshes"
+                          if len(c["values"]) < 3 else "") if m))
+    for f, ok in res["checkerFree"].items():
+        checks.record(HERE, "n%s checker-board C of %s" % (n, f),
+                      fine["checkerBoard"][f]["allCells"],
+                      "<= %g" % CHECKER_FREE, ok, "" if ok else small)
+    checks.record(HERE, "n%s max energy growth / E0" % n,
+                  fine["energy"]["maxGrowthRelative"], "< 1e-3",
+                  res["energyGrowthBelow1e-3"])
 
 
 def main():

@@ -28,7 +28,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
 
-from touchfoam import cases, postprocess, run  # noqa: E402
+from touchfoam import cases, checks, postprocess, run  # noqa: E402
 
 T_TWIST = 0.1
 ENERGY_TOL = 1e-10
@@ -144,8 +144,17 @@ def main():
     if out.get("twistRelativeDifference") is not None:
         print("twist difference %.1f %%"
               % (100 * out["twistRelativeDifference"]))
+    for nu, r in out["runs"].items():
+        checks.record(HERE, "nu %s max energy increase / E0" % nu,
+                      r["maxEnergyIncreaseRelative"], "<= %g" % ENERGY_TOL,
+                      r["energyPass"], "run failed: %s" % r["runError"]
+                      if r["runError"] else "")
+    if "twistPass" in out:
+        checks.record(HERE, "twist(0.1 s) relative difference between nu",
+                      out["twistRelativeDifference"], "< %g" % TWIST_TOL,
+                      out["twistPass"])
     print("%s: results.json" % ("PASS" if out["pass"] else "FAIL"))
-    return 0 if out["pass"] else 1
+    return 0 if out["pass"] and not checks.status(HERE) else 1
 
 
 if __name__ == "__main__":

@@ -9,6 +9,8 @@ Modules
     analytic   closed-form solutions of the benchmarks (swinging cube, ...)
     cases      set-up of each tutorial (mesh, initial fields)
     gmsh       Gmsh 2.2 ASCII tetrahedral mesh of a cube
+    checks     the checks of a validation study (measured, reference, pass) in
+               its checks.json, and the table validation/Allrun reports
 
 Scripts find this package by walking up from their own folder to
 bin/python (so copies of a tutorial inside the repository work), else
