@@ -481,6 +481,31 @@ CORPUS = [
     ("rigidWallPointMissing", "0/U",
      U_PATCH("type rigidWall; normal (1 0 0);"),
      ["point", "0/U", "X0"]),
+    # the contact issue's entries: friction, touching, body contact, gravity
+    ("frictionType", "0/U",
+     U_PATCH("type rigidWall; point (0 0 0); normal (1 0 0); friction "
+             "{ type coulom; muStatic 0.4; muKinetic 0.3; }"),
+     ["coulom", "coulomb", "frictionless"]),
+    ("frictionKineticAboveStatic", "0/U",
+     U_PATCH("type rigidWall; point (0 0 0); normal (1 0 0); friction "
+             "{ type coulomb; muStatic 0.2; muKinetic 0.3; }"),
+     ["muKinetic", "muStatic"]),
+    ("frictionNegative", "0/U",
+     U_PATCH("type rigidWall; point (0 0 0); normal (1 0 0); friction "
+             "{ type coulomb; muStatic -0.1; muKinetic 0; }"),
+     ["muStatic"]),
+    ("wallTouching", "0/U",
+     U_PATCH("type rigidWall; point (0 0 0); normal (1 0 0); "
+             "touching lowest;"),
+     ["touching", "faceMean", "lowestFreePoint"]),
+    ("bodyContactPartner", "0/U",
+     U_PATCH("type bodyContact; patches (X1);"),
+     ["patches", "X1", "not a bodyContact patch"]),
+    ("gravityDimensions", "constant/g",
+     write_file("constant/g", "FoamFile { version 2.0; format ascii; "
+                "class uniformDimensionedVectorField; object g; }\n"
+                "dimensions [0 1 -1 0 0 0 0];\nvalue (0 -9.81 0);\n"),
+     ["constant/g", "dimensions"]),
     # system/controlDict: solidMonitor and touchFoam's entries
     ("solidMonitorOrgin", CD,
      (r"(type\s+solidMonitor;)", r"\1 orgin (0 0 0);"),
