@@ -12,7 +12,8 @@ the impact tests) runs small through its own ./Allrun, which ends with
 render.py in pvbatch and plot.py: taylorImpact -n 2 (60 cells, to 80 us),
 barRebound -n 2 (60 cells, to 400 us), twistingColumn -n 2 (48 cells, to
 0.3 s), elasticImpact -n 50, holedPlate -n 2 (gmsh), spinningCube -n 3,
-swingingCube -n 4, unstructuredCube -n 4, slidingBlock -n 2.  Asserted:
+swingingCube -n 4, unstructuredCube -n 4, slidingBlock -n 4 (two cells across
+the height would colour its hydrostatic pressure in two hues).  Asserted:
   - no field a render.py asks for is missing from the case (the log has no
     'no cell field'), and every picture is there: taylorImpact pressure,
     sigmaEq and epsilonP at 10, 30, 50, 80 us, barRebound pressure at 30,
@@ -75,7 +76,7 @@ TUTORIALS = {
         "sigmaEq": ["1ms", "2ms", "3ms"]}),
     "unstructuredCube": (["-n", "4"], (800, 800), {
         "sigmaEq": ["1ms", "2ms", "3ms"]}),
-    "slidingBlock": (["-n", "2"], (1000, 400), {
+    "slidingBlock": (["-n", "4"], (1000, 400), {
         "pressure": ["0.05s", "0.15s", "0.3s", "0.45s"]}),
 }
 #: tutorial: the plot its plot.py writes (made when matplotlib is installed)
