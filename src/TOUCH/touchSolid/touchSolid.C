@@ -255,6 +255,7 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     }
 
     checkInput();
+    update_->setNodalAveraging(nodalAveraging_.get(), controls_);
 
     if (mesh.time().value() == 0)
     {

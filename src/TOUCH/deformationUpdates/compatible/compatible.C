@@ -725,6 +725,10 @@ void Foam::deformationUpdates::compatible::rates
 
     addFaceRates(lmRate);
     addBoundaryFaceForces();
+    if (pointForcing_)
+    {
+        pointForcing_->addPointForces(shares_, pointForce_);
+    }
 
     const bool tally = upwindLoss_.valid() && stage == 1;
     if (tally)

@@ -110,6 +110,7 @@ Foam::deformationUpdate::deformationUpdate
     tC_(faces.mesh().boundary().size()),
     rigidSpin_(Zero),
     pointDisplacement_(nullptr),
+    pointForcing_(nullptr),
     neighbourMaterial_()
 {
     if (!law.uniformMaterial())
@@ -132,6 +133,32 @@ Foam::deformationUpdate::deformationUpdate
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::deformationUpdate::setNodalAveraging
+(
+    const nodalAveraging* average,
+    const dictionary& controls
+)
+{
+    if (!average || !average->addsPointForces())
+    {
+        return;
+    }
+
+    // Only the compatible update has nodal forces to add to
+    if (type() != "compatible")
+    {
+        FatalIOErrorInFunction(controls)
+            << "Entry 'nodalAveraging " << average->type() << "' in "
+            << controls.name() << " with FUpdate " << type()
+            << ": it adds nodal forces, which only the compatible update"
+            << " has" << nl << "Valid: FUpdate compatible, or nodalAveraging"
+            << " off | pressure | deformation" << nl << exit(FatalIOError);
+    }
+
+    pointForcing_ = average;
+}
+
 
 Foam::scalar Foam::deformationUpdate::boundaryPower() const
 {

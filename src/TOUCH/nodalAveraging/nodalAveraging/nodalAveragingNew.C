@@ -29,7 +29,8 @@ namespace Foam
         "system/fvSolution TOUCH", "nodalAveraging",
         "average at the points: the volume ratio (pressure: laws with a"
         " volumetric part of J alone) or the whole F (deformation: stateless"
-        " laws, tetrahedra)",
+        " laws, tetrahedra); or the volume ratio from each cell's current"
+        " volume (cellVolume: stateless laws, FUpdate compatible)",
         "-", word("off"), entryLimits::selectedFrom(&nodalAveragingChoices)
     );
 }
