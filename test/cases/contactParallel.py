@@ -15,29 +15,29 @@ digits so that equal numbers are equal doubles:
                 and FUpdate compatible (the tutorial's default) with 1 x 1
                 across (40 cells, one face a patch);
   slidingBlock  the block sliding on the rigid wall 'bottom' with Coulomb
-                friction (-n 4: 8 wall faces) to 0.35 s, through the stop
-                at 0.34 s, written every 0.05 s.
+                friction (-n 4: 8 wall faces), serial to 0.35 s written
+                every 0.01 s; the parallel runs restart from its 0.32 s
+                and go through the stop at 0.34 s to 0.35 s.
 
-Decompositions (decomposeParDict numberOfSubdomains/method/coeffs from
-system/decomposeOptions):
-  metis2 metis3 scotch2 scotch3     the plain methods (which may cut the
-                                    bars across their axes, away from the
-                                    contact);
-  structured...                     method structured (structuredCoeffs:
-                                    the contact patches' faces split by
-                                    metis or scotch, every cell column
-                                    follows its face): every rank holds
-                                    faces of the contact patches;
-  apart2                            manual: bar1 on rank 0, bar2 on rank
-                                    1: the two bodies' contact faces on
-                                    different ranks, each patch whole;
-  cut2                              manual: bar1 halved across (y), bar2
-                                    on rank 1: bar1End cut 2 + 2, bar2End
-                                    whole on one of its ranks;
-  cut3                              manual: bar1 halved across y on ranks
-                                    0 and 1, bar2 across z on ranks 2 and
-                                    1: both patches cut, a face's partner
-                                    on another rank.
+Decompositions (system/decomposeOptions: numberOfSubdomains, method,
+coefficients):
+  metisN, scotchN     the plain methods on N ranks (barCollision compatible:
+                      metis3, scotch2; plain: metis2, scotch3; the block:
+                      metis3), which may cut the bars across their axes;
+  structured<m>N      method structured (structuredCoeffs: the contact
+                      patches' faces split by metis or scotch, each cell
+                      column follows its face): barCollision plain
+                      structuredmetis3 (both patches cut), the block
+                      structuredmetis2 and structuredscotch3 (the wall on
+                      every rank);
+  apart2              manual: bar1 on rank 0, bar2 on rank 1: the two
+                      bodies' contact faces on different ranks, each patch
+                      whole (both updates);
+  cut2                manual: bar1 halved across (y), bar2 on rank 1:
+                      bar1End cut 2 + 2, bar2End whole on one of its ranks;
+  cut3                manual: bar1 halved across y on ranks 0 and 1, bar2
+                      across z on ranks 2 and 1: both patches cut, a face's
+                      partner on another rank.
 The contact (wall) faces per processor are counted from
 processor*/constant/polyMesh/boundary and reported; the decompositions
 meant to cut a patch fail when they do not.
@@ -59,9 +59,9 @@ asserted at TOL_CUT (6e-11), not 1e-12: see there.
 Not here: FUpdate compatible with M x M >= 2 x 2 faces across.  Serial
 itself grows a lateral mode from round-off there (the bars' lateral
 momentum from 1e-18 to 1e-7 kg m/s by 0.9 ms, lm across a section
-spreading to 2e-2 of 140), equally with a symmetricPlane in place of the
-contact (validation/barCollision/FINDINGS.md): any change of the sums'
-order, a decomposition among them, ends 1e-4 away.
+spreading by 2.4e-2 at 1 ms), equally with a symmetricPlane in place of
+the contact (validation/barCollision/FINDINGS.md): any change of the
+sums' order, a decomposition among them, ends 1.7e-4 of lm away.
 Work folders: test/runs/contactParallel/.
 """
 
