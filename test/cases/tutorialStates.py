@@ -55,6 +55,7 @@ TUTORIALS = {
     "ringImpact": ["-n", "24"],
     "torusImpact": ["-n", "4"],
     "slidingBlock": ["-n", "2"],
+    "barCollision": ["-n", "10"],
 }
 LIMITS = {"coloured": (0.005, 0.95), "hueBins": 3, "hueShare": 1e-3}
 

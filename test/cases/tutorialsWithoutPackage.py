@@ -51,6 +51,8 @@ NAME = "tutorialsWithoutPackage"
 TOLERANCE = 1e-12
 
 SWINGING = "swinging cube mode"
+#: the equal bars: +0.1 m/s on x < 0 (bar1), -0.1 m/s on x > 0 (bar2)
+BARS = "two bars at +-v"
 
 #: (tutorial, Allrun options, closed-form initial velocity or SWINGING,
 #:  pictures and plots that must be skipped)
@@ -68,6 +70,7 @@ TUTORIALS = [
     ("ringImpact", ["-n", "24"], ((0.0, -0.59, 0.0), (0, 0, 0)), True),
     ("torusImpact", ["-n", "4"], ((0.0, -3.0, 0.0), (0, 0, 0)), True),
     ("slidingBlock", ["-n", "2"], ((1.0, 0.0, 0.0), (0, 0, 0)), True),
+    ("barCollision", ["-n", "10"], BARS, True),
 ]
 
 
@@ -108,6 +111,10 @@ def closed_form(case, form, X):
         mat = cases.material(case)
         sol = analytic.SwingingCube(E=mat["E"], nu=mat["nu"], rho=mat["rho"])
         return sol.velocity(X, 0.0), sol.deformation_gradient(X, 0.0)
+    if form == BARS:
+        U = np.zeros((len(X), 3))
+        U[:, 0] = np.where(X[:, 0] < 0, 0.1, -0.1)
+        return U, None
     if form == "twist":
         return analytic.TwistingColumn(Omega=105.0, L=6.0).velocity(X), None
     translation, omega = form

@@ -69,5 +69,16 @@ def relative_max_difference(a, b, floor=1e-300):
     return np.abs(a - b).max() / max(np.abs(b).max(), floor)
 
 
+def without_pictures():
+    """Environment entries for a tutorial's Allrun run by a test: bin/python
+    off PYTHONPATH, so that its pictures and plots (minutes of pvbatch on a
+    loaded machine) are skipped; its tutorialResults finds the package by
+    its own path."""
+    kept = [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep)
+            if p and not p.rstrip("/").endswith(os.path.join("bin",
+                                                             "python"))]
+    return {"PYTHONPATH": os.pathsep.join(kept)}
+
+
 def read_internal(case_time_dir, field, n):
     return foamfile.read_field(os.path.join(case_time_dir, field)).internal(n)
