@@ -516,11 +516,12 @@ CORPUS = [
     ("bodyContactFrictionScalar", "0/U",
      U_PATCH("type bodyContact; friction 0.3;"),
      ["friction", "sub-dictionary", "coulomb"]),
+    # X0, Y0, Z0 with friction, X1, Y1, Z1 without
     ("bodyContactFrictionDiffers", ["0/U", "0/U"],
      [U_PATCH("type bodyContact; friction "
               "{ type coulomb; muStatic 0.3; muKinetic 0.3; }"),
-      U_PATCH("type bodyContact;")],
-     ["X0", "X1", "different 'friction'", "the same friction"]),
+      (r"type\s+skewSymmetricPlane;", "type bodyContact;")],
+     ["0/U", "different 'friction'", "the same friction"]),
     # (the swinging cube's update is compatible)
     ("bodyContactFrictionCompatible", "0/U",
      U_PATCH("type bodyContact; friction "
