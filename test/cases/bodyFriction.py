@@ -40,14 +40,17 @@ Asserted:
     patches' flux work with the opposite sign (a second, independent
     account: the boundaries' work of the fluxes);
   - friction against the closed form of sliding Coulomb friction: each
-    body's tangential impulse mu times its normal impulse (2 %), the bodies
-    lose relative tangential velocity (the end's w_A - w_B below the
-    frictionless run's by at least mu of the change of the normal one)
-    and gain spin: each body's angular momentum about its own centroid
-    moved, beyond the frictionless run's, by the torque of its friction
-    impulse about its centre, -(L/2) dp_y (5 %, both of the same sign);
-    frictionless, the tangential momentum of each body is kept (1e-3 of
-    its start: the faces stay vertical to O(spin dt)).
+    body's tangential impulse mu times its normal impulse, to within the
+    frictionless run's own tangential/normal impulse ratio (the tilt of
+    the contact normals at the deforming corners; 0.041 measured, asserted
+    < 0.2 mu); each body's spin change about its centroid equals the
+    angular impulse of its tangential impulse at the contact face (lever
+    L/2) plus that of its normal impulse at the middle of the overlap
+    (lever L/4) within 2 % (friction and frictionless runs); friction spins
+    block A against its sliding (its spin below the frictionless run's);
+    the relative tangential velocity at the end is below the frictionless
+    run's by at least half of 2 mu J_n/M;
+  - FUpdate compatible with friction is refused naming FUpdate and plain.
 Work folders: test/runs/bodyFriction/.
 """
 
