@@ -54,7 +54,6 @@ Asserted:
 Work folders: test/runs/bodyFriction/.
 """
 
-import glob
 import os
 import shutil
 import sys
