@@ -501,6 +501,32 @@ CORPUS = [
     ("bodyContactPartner", "0/U",
      U_PATCH("type bodyContact; patches (X1);"),
      ["patches", "X1", "not a bodyContact patch"]),
+    ("bodyContactFrictionType", "0/U",
+     U_PATCH("type bodyContact; friction "
+             "{ type coulom; muStatic 0.4; muKinetic 0.3; }"),
+     ["coulom", "coulomb", "frictionless"]),
+    ("bodyContactFrictionKinetic", "0/U",
+     U_PATCH("type bodyContact; friction "
+             "{ type coulomb; muStatic 0.2; muKinetic 0.3; }"),
+     ["muKinetic", "muStatic"]),
+    ("bodyContactFrictionMisspelt", "0/U",
+     U_PATCH("type bodyContact; friction "
+             "{ type coulomb; muStatic 0.3; muKinetc 0.3; }"),
+     ["muKinetc", "coulomb", "did you mean 'muKinetic'"]),
+    ("bodyContactFrictionScalar", "0/U",
+     U_PATCH("type bodyContact; friction 0.3;"),
+     ["friction", "sub-dictionary", "coulomb"]),
+    # X0, Y0, Z0 with friction, X1, Y1, Z1 without
+    ("bodyContactFrictionDiffers", ["0/U", "0/U"],
+     [U_PATCH("type bodyContact; friction "
+              "{ type coulomb; muStatic 0.3; muKinetic 0.3; }"),
+      (r"type\s+skewSymmetricPlane;", "type bodyContact;")],
+     ["0/U", "different 'friction'", "the same friction"]),
+    # (the swinging cube's update is compatible)
+    ("bodyContactFrictionCompatible", "0/U",
+     U_PATCH("type bodyContact; friction "
+             "{ type coulomb; muStatic 0.3; muKinetic 0.3; }"),
+     ["X0", "FUpdate", "compatible", "plain", "fvSolution"]),
     ("gravityDimensions", "constant/g",
      write_file("constant/g", "FoamFile { version 2.0; format ascii; "
                 "class uniformDimensionedVectorField; object g; }\n"

@@ -4,7 +4,8 @@ collision's closed forms of 1D elastic waves (tutorials/barCollision).
 postProcessing/contact/<startTime>/contact.dat holds, at the first
 Runge-Kutta stage of every step,
     # Time nFaces normalForce area maxPenetration mostTensileTraction
-(force and area summed over the face pairs).  The bars of barCollision:
+(force and area summed over the face pairs), with friction also
+    maxFrictionRatio maxPairFrictionPower frictionPower.  The bars of barCollision:
 rho0 = 1400, E = 1.04e9, nu = 0.3 (c = 1000 m/s, Z = 1.4e6 Pa s/m), bar2's
 modulus E2 (system/meshOptions), lengths L1, L2, velocities v1, v2.
 """
@@ -33,6 +34,11 @@ def read_contact(case):
     for path in sorted(glob.glob(os.path.join(
             case, "postProcessing", "contact", "*", "contact.dat")),
             key=lambda p: float(os.path.basename(os.path.dirname(p)))):
+        # With friction the header names three more columns
+        with open(path) as f:
+            for line in f:
+                if line.startswith("# Time"):
+                    names = line.lstrip("#").split()
         data = np.loadtxt(path, comments="#", ndmin=2)
         if rows and len(data):
             rows = [r for r in rows if r[0] < data[0, 0]]

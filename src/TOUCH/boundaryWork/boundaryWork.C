@@ -6,6 +6,38 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "boundaryWork.H"
+#include "bodyContactFvPatchVectorField.H"
+#include "volFields.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    //- The bodyContact patches of lm whose friction law is not frictionless
+    static labelList frictionContactPatches(const fvMesh& mesh)
+    {
+        DynamicList<label> patches;
+        if (mesh.foundObject<volVectorField>("lm"))
+        {
+            const volVectorField& lm = mesh.lookupObject<volVectorField>("lm");
+            forAll(lm.boundaryField(), patchi)
+            {
+                const fvPatchVectorField& pf = lm.boundaryField()[patchi];
+                if
+                (
+                    isA<bodyContactFvPatchVectorField>(pf)
+                 && !refCast<const bodyContactFvPatchVectorField>(pf)
+                    .friction().frictionless()
+                )
+                {
+                    patches.append(patchi);
+                }
+            }
+        }
+        return labelList(std::move(patches));
+    }
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -21,7 +53,10 @@ Foam::boundaryWork::boundaryWork
     patchWork_(mesh.boundary().size(), Zero),
     bodyWork_(nBodies, Zero),
     patchWork0_(patchWork_),
-    bodyWork0_(bodyWork_)
+    bodyWork0_(bodyWork_),
+    frictionPatches_(frictionContactPatches(mesh)),
+    frictionWork_(0),
+    frictionWork0_(0)
 {}
 
 
@@ -31,6 +66,7 @@ void Foam::boundaryWork::storeOldTime()
 {
     patchWork0_ = patchWork_;
     bodyWork0_ = bodyWork_;
+    frictionWork0_ = frictionWork_;
 }
 
 
@@ -75,6 +111,21 @@ void Foam::boundaryWork::addStage
         }
         patchWork_[patchi] += patchWork;
     }
+
+    if (frictionPatches_.size())
+    {
+        const volVectorField& lm = mesh_.lookupObject<volVectorField>("lm");
+        frictionWork_ = alpha*frictionWork0_ + beta*frictionWork_;
+        for (const label patchi : frictionPatches_)
+        {
+            frictionWork_ +=
+                weight
+               *refCast<const solidFluxFvPatchVectorField>
+                (
+                    lm.boundaryField()[patchi]
+                ).stageFrictionPower();
+        }
+    }
 }
 
 
@@ -82,6 +133,7 @@ void Foam::boundaryWork::restoreOldTime()
 {
     patchWork_ = patchWork0_;
     bodyWork_ = bodyWork0_;
+    frictionWork_ = frictionWork0_;
 }
 
 

@@ -29,6 +29,16 @@ namespace Foam
         " same active set)",
         "-", "uniform 0", "nonuniform List<scalar> 4(0 1 1 0)"
     );
+
+    static const describedEntry bodyContactSlipEntry
+    (
+        "0/U (or 0/lm) boundaryField, type bodyContact", "slip",
+        "with friction, written by touchFoam with every time: each face's"
+        " relative sliding velocity as the first side of a pair at the last"
+        " decision, zero where it sticks (a restart continues with the same"
+        " stick/slip state)",
+        "m/s", "uniform (0 0 0)", "nonuniform List<vector> 2((0 0 0) (1 0 0))"
+    );
 }
 
 
@@ -56,6 +66,26 @@ Foam::boolList Foam::bodyContactFvPatchVectorField::readContact
 }
 
 
+Foam::vectorField Foam::bodyContactFvPatchVectorField::readSlip
+(
+    const dictionary& dict
+) const
+{
+    if (friction_->frictionless())
+    {
+        return vectorField();
+    }
+
+    const word& name = bodyContactSlipEntry.name();
+    if (dict.found(name, keyType::LITERAL))
+    {
+        return vectorField(name, dict, patch().size());
+    }
+
+    return vectorField(patch().size(), Zero);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
@@ -68,6 +98,10 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     patches_(),
     contact_(p.size(), false),
     traction_(p.size(), Zero),
+    friction_(frictionLaw::New(dictionary())),
+    slip_(),
+    frictionPower_(0),
+    moment_(p.size(), Zero),
     touching_(p.size(), false),
     normal_(p.size(), Zero),
     contactVelocity_(p.size(), Zero),
@@ -88,7 +122,8 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
         p, iF, dict,
         wordList
         ({
-            bodyContactPatchesEntry.name(), bodyContactContactEntry.name()
+            bodyContactPatchesEntry.name(), bodyContactContactEntry.name(),
+            "friction", bodyContactSlipEntry.name()
         })
     ),
     patches_
@@ -97,6 +132,10 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     ),
     contact_(readContact(p, dict)),
     traction_(p.size(), Zero),
+    friction_(frictionLaw::New(dict)),
+    slip_(readSlip(dict)),
+    frictionPower_(0),
+    moment_(p.size(), Zero),
     touching_(p.size(), false),
     normal_(p.size(), Zero),
     contactVelocity_(p.size(), Zero),
@@ -117,6 +156,15 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     patches_(ptf.patches_),
     contact_(p.size(), false),
     traction_(p.size(), Zero),
+    friction_(ptf.friction_->clone()),
+    slip_
+    (
+        ptf.friction_->frictionless()
+      ? vectorField()
+      : vectorField(ptf.slip_, mapper)
+    ),
+    frictionPower_(0),
+    moment_(p.size(), Zero),
     touching_(p.size(), false),
     normal_(p.size(), Zero),
     contactVelocity_(p.size(), Zero),
@@ -145,6 +193,10 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     patches_(ptf.patches_),
     contact_(ptf.contact_),
     traction_(ptf.traction_),
+    friction_(ptf.friction_->clone()),
+    slip_(ptf.slip_),
+    frictionPower_(ptf.frictionPower_),
+    moment_(ptf.moment_),
     touching_(ptf.touching_),
     normal_(ptf.normal_),
     contactVelocity_(ptf.contactVelocity_),
@@ -163,6 +215,10 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     patches_(ptf.patches_),
     contact_(ptf.contact_),
     traction_(ptf.traction_),
+    friction_(ptf.friction_->clone()),
+    slip_(ptf.slip_),
+    frictionPower_(ptf.frictionPower_),
+    moment_(ptf.moment_),
     touching_(ptf.touching_),
     normal_(ptf.normal_),
     contactVelocity_(ptf.contactVelocity_),
@@ -172,6 +228,26 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::bodyContactFvPatchVectorField::setPointConstrained()
+{
+    if (!friction_->frictionless())
+    {
+        const dictionary& controls =
+            patch().boundaryMesh().mesh().solutionDict().subDict("TOUCH");
+
+        FatalIOErrorInFunction(controls)
+            << "Patch " << patch().name() << " is a bodyContact with friction"
+            << " and FUpdate is compatible (" << controls.name() << "):"
+            << " the normal contact force is then the point constraint's"
+            << " reaction, which the friction law does not see" << nl
+            << "Valid FUpdate with friction: plain" << nl
+            << exit(FatalIOError);
+    }
+
+    pointConstrained_ = true;
+}
+
 
 void Foam::bodyContactFvPatchVectorField::flux
 (
@@ -203,6 +279,27 @@ void Foam::bodyContactFvPatchVectorField::flux
                 (tangential & tC[facei])
               + (nn & (s.t[facei] - s.Up[facei]*(s.p[facei] - momentum)));
         }
+    }
+}
+
+
+void Foam::bodyContactFvPatchVectorField::addTorque
+(
+    const interiorState& s,
+    const vectorField& tC,
+    vector& torque
+) const
+{
+    if (pointConstrained_)
+    {
+        solidFluxFvPatchVectorField::addTorque(s, tC, torque);
+        return;
+    }
+
+    // The flux's force is the faces' contact forces (tC = traction_)
+    for (const vector& m : moment_)
+    {
+        torque += m;
     }
 }
 
@@ -254,6 +351,12 @@ void Foam::bodyContactFvPatchVectorField::autoMap(const fvPatchFieldMapper& m)
     normal_ = Zero;
     contactVelocity_.setSize(contact.size());
     contactVelocity_ = Zero;
+    moment_.setSize(contact.size());
+    moment_ = Zero;
+    if (!friction_->frictionless())
+    {
+        slip_.autoMap(m);
+    }
 }
 
 
@@ -272,6 +375,10 @@ void Foam::bodyContactFvPatchVectorField::rmap
     {
         contact_[addr[i]] = cptf.contact_[i];
     }
+    if (!friction_->frictionless())
+    {
+        slip_.rmap(cptf.slip_, addr);
+    }
 }
 
 
@@ -289,6 +396,12 @@ void Foam::bodyContactFvPatchVectorField::write(Ostream& os) const
         contact[facei] = contact_[facei] ? 1 : 0;
     }
     contact.writeEntry(bodyContactContactEntry.name(), os);
+
+    if (!friction_->frictionless())
+    {
+        friction_->write(os);
+        slip_.writeEntry(bodyContactSlipEntry.name(), os);
+    }
 }
 
 

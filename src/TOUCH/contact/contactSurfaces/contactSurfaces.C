@@ -131,6 +131,44 @@ void Foam::contactSurfaces::setAllowed(const volVectorField& lm)
             allowed_[b][a] = true;
         }
     }
+
+    // A pair's friction is the pair's: the two patches must give the same
+    // (each face acts as the first side of its pair with its own patch's
+    // law, so different laws would make the exchange depend on the side)
+    forAll(patches_, a)
+    {
+        const bodyContactFvPatchVectorField& pa =
+            refCast<const bodyContactFvPatchVectorField>
+            (
+                lm.boundaryField()[patches_[a]]
+            );
+
+        forAll(patches_, b)
+        {
+            const bodyContactFvPatchVectorField& pb =
+                refCast<const bodyContactFvPatchVectorField>
+                (
+                    lm.boundaryField()[patches_[b]]
+                );
+
+            if
+            (
+                b > a && allowed_[a][b]
+             && pa.friction().dict() != pb.friction().dict()
+            )
+            {
+                FatalErrorInFunction
+                    << "Patches " << pa.patch().name() << " and "
+                    << pb.patch().name() << " in 0/U (or 0/" << lm.name()
+                    << ") may touch but give different 'friction': "
+                    << pa.friction().dict() << " and "
+                    << pb.friction().dict() << nl
+                    << "Valid: the same friction sub-dictionary on both"
+                    << " (or on neither: frictionless)" << nl
+                    << exit(FatalError);
+            }
+        }
+    }
 }
 
 
@@ -322,9 +360,23 @@ Foam::contactSurfaces::contactSurfaces
     globalFaces_(nContactFaces(mesh, patches_)),
     searchSize_(0),
     mostTensile_(-GREAT),
+    friction_(false),
+    frictionRatio_(0),
+    pairFrictionPower_(-GREAT),
     matchChecked_(false)
 {
     setAllowed(lm);
+
+    for (const label patchi : patches_)
+    {
+        friction_ =
+            friction_
+         || !refCast<const bodyContactFvPatchVectorField>
+            (
+                lm.boundaryField()[patchi]
+            ).friction().frictionless();
+    }
+    reduce(friction_, orOp<bool>());
 
     forAll(patches_, a)
     {
@@ -344,7 +396,9 @@ Foam::contactSurfaces::contactSurfaces
             << "# Contact of the bodyContact patches: at the first stage of"
             << " each step; force and area summed over the pairs" << nl
             << "# Time nFaces normalForce area maxPenetration"
-            << " mostTensileTraction" << nl;
+            << " mostTensileTraction"
+            << (friction_ ? " maxFrictionRatio maxPairFrictionPower"
+                " frictionPower" : "") << nl;
         file_().precision(12);
     }
 }
@@ -420,6 +474,7 @@ void Foam::contactSurfaces::update
     // 3-5. Each face of this rank as side 1 of its pair
     const label offset = globalFaces_.localStart();
     vectorField force(x_.size(), Zero);
+    vectorField moment(x_.size(), Zero);
 
     // Per face, the pairs pushing on it weighted by their areas: the
     // weight, the outward normal and the contact velocity v*_n n (the
@@ -444,6 +499,13 @@ void Foam::contactSurfaces::update
             );
         boolList& contact = condition.contact();
 
+        // The pair's friction (the same on both patches: setAllowed)
+        const frictionLaw& law = condition.friction();
+        const bool friction = !law.frictionless();
+        vectorField& slip = condition.slip();
+        scalar& frictionPower = condition.frictionPower();
+        frictionPower = 0;
+
         forAll(contact, i)
         {
             const label k = start_[s] + i;
@@ -458,6 +520,10 @@ void Foam::contactSurfaces::update
             if (gj < 0)
             {
                 contact[i] = false;
+                if (friction)
+                {
+                    slip[i] = Zero;
+                }
                 continue;
             }
 
@@ -495,25 +561,53 @@ void Foam::contactSurfaces::update
 
             if (!contact[i])
             {
+                if (friction)
+                {
+                    // Side 1's sliding relative to side 2 as it arrives: a
+                    // face that lands sliding starts with the kinetic limit
+                    slip[i] = ((dv & nij)*nij) - dv;
+                }
                 continue;
             }
 
-            const scalar Zt1 = Zs_[gi];
-            const scalar Zt2 = Zs_[gj];
-            const tensor tangential(tensor::I - sqr(nij));
-            const vector stick
-            (
-                tangential
-              & ((Zt2*t1 + Zt1*t2 + Zt1*Zt2*dv)/(Zt1 + Zt2))
-            );
-
             const scalar share = 0.5*a_[gi];
-            const vector f
-            (
-                (tN*nij + tangentialTraction(stick, tN))*share
-            );
+            vector f(tN*nij);
+
+            if (friction)
+            {
+                // The sticking traction (S-wave impedances), which makes
+                // the two sides' tangential velocities equal, and the
+                // law's return to its cone; each side's tangential
+                // velocity then follows its own characteristic,
+                //     v*_1 = v_1 + (t - t_1)/Z_1,  v*_2 = v_2 - (t - t_2)/Z_2,
+                // so side 1 slides relative to side 2 at
+                //     (t - stick)(1/Z_1 + 1/Z_2),
+                // against t: the pair's friction power t . slip <= 0
+                const scalar Zt1 = Zs_[gi];
+                const scalar Zt2 = Zs_[gj];
+                const tensor tangential(tensor::I - sqr(nij));
+                const vector stick
+                (
+                    tangential
+                  & ((Zt2*t1 + Zt1*t2 + Zt1*Zt2*dv)/(Zt1 + Zt2))
+                );
+                const vector tT(law.tangentialTraction(stick, -tN, slip[i]));
+
+                slip[i] = (tT - stick)*(1/Zt1 + 1/Zt2);
+                const scalar pairPower = (tT & slip[i])*share;
+                frictionPower += pairPower;
+                pairFrictionPower_ = max(pairFrictionPower_, pairPower);
+                f += tT;
+            }
+            f *= share;
+
             force[gi] += f;
             force[gj] -= f;
+
+            // Both sides' torques at the pair's contact point
+            const vector m(0.5*(x_[gi] + x_[gj]) ^ f);
+            moment[gi] += m;
+            moment[gj] -= m;
 
             const scalar vN =
                 (
@@ -544,6 +638,8 @@ void Foam::contactSurfaces::update
     {
         Pstream::listCombineGather(force, plusEqOp<vector>());
         Pstream::listCombineScatter(force);
+        Pstream::listCombineGather(moment, plusEqOp<vector>());
+        Pstream::listCombineScatter(moment);
         Pstream::listCombineGather(weight, plusEqOp<scalar>());
         Pstream::listCombineScatter(weight);
         Pstream::listCombineGather(normalSum, plusEqOp<vector>());
@@ -561,6 +657,7 @@ void Foam::contactSurfaces::update
                 lm.boundaryFieldRef()[patches_[s]]
             );
         vectorField& traction = condition.traction();
+        vectorField& faceMoment = condition.moment();
         boolList& touching = condition.touching();
         vectorField& normal = condition.normal();
         vectorField& velocity = condition.contactVelocity();
@@ -570,11 +667,23 @@ void Foam::contactSurfaces::update
         {
             const label g = offset + start_[s] + i;
             traction[i] = force[g]/magSf[i];
+            faceMoment[i] = moment[g];
             touching[i] = weight[g] > 0;
             if (touching[i])
             {
                 normal[i] = normalSum[g]/mag(normalSum[g]);
                 velocity[i] = velocitySum[g]/weight[g];
+
+                if (friction_)
+                {
+                    const scalar tn = traction[i] & normal[i];
+                    const scalar tt = mag(traction[i] - tn*normal[i]);
+                    if (tt > 0)
+                    {
+                        frictionRatio_ =
+                            max(frictionRatio_, tt/max(mag(tn), VSMALL));
+                    }
+                }
             }
         }
     }
@@ -588,14 +697,40 @@ void Foam::contactSurfaces::update
         reduce(penetration, maxOp<scalar>());
         reduce(mostTensile_, maxOp<scalar>());
 
+        scalar power = 0;
+        if (friction_)
+        {
+            reduce(frictionRatio_, maxOp<scalar>());
+            reduce(pairFrictionPower_, maxOp<scalar>());
+            forAll(patches_, s)
+            {
+                power +=
+                    refCast<const bodyContactFvPatchVectorField>
+                    (
+                        lm.boundaryField()[patches_[s]]
+                    ).stageFrictionPower();
+            }
+            reduce(power, sumOp<scalar>());
+        }
+
         if (file_.valid())
         {
             file_()
                 << time << ' ' << nActive << ' ' << normalForce << ' '
                 << area << ' ' << penetration << ' '
-                << (mostTensile_ > -GREAT ? mostTensile_ : 0) << endl;
+                << (mostTensile_ > -GREAT ? mostTensile_ : 0);
+            if (friction_)
+            {
+                file_()
+                    << ' ' << frictionRatio_ << ' '
+                    << (pairFrictionPower_ > -GREAT ? pairFrictionPower_ : 0)
+                    << ' ' << power;
+            }
+            file_() << endl;
         }
         mostTensile_ = -GREAT;
+        frictionRatio_ = 0;
+        pairFrictionPower_ = -GREAT;
     }
 }
 

@@ -29,14 +29,9 @@ void Foam::deformationUpdate::boundaryFlux
 {
     vectorField& pC = pC_[patch.index()];
     vectorField& tC = tC_[patch.index()];
-    const scalarField& magSf = patch.magSf();
 
     condition.flux(state, pC, tC);
-
-    forAll(tC, i)
-    {
-        torque += state.x[i] ^ (tC[i]*magSf[i]);
-    }
+    condition.addTorque(state, tC, torque);
 
     condition == pC;
 }

@@ -15,7 +15,8 @@ namespace Foam
 {
     static const describedEntry frictionEntry
     (
-        "0/U (or 0/lm) boundaryField, contact condition (rigidWall)",
+        "0/U (or 0/lm) boundaryField, contact condition"
+        " (rigidWall, bodyContact)",
         "friction",
         "the friction law of the contact, a sub-dictionary (absent:"
         " frictionless)",

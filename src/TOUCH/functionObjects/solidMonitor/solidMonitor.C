@@ -179,6 +179,10 @@ void Foam::functionObjects::solidMonitor::writeFileHeader(Ostream& os)
     {
         writeTabbed(os, "plasticDissipation");
     }
+    if (friction_)
+    {
+        writeTabbed(os, "frictionDissipation");
+    }
     writeTabbed(os, "boundaryWork");
     writeTabbed(os, "numericalDissipation");
     writeTabbed(os, "numericalDissipationFraction");
@@ -240,6 +244,7 @@ Foam::functionObjects::solidMonitor::solidMonitor
         mesh_.lookupObject<touchSolid>(touchSolid::typeName).law()
        .dissipates()
     ),
+    friction_(false),
     bodies_(mesh_),
     workPatches_(findWorkPatches()),
     E0_(0),
@@ -254,6 +259,7 @@ Foam::functionObjects::solidMonitor::solidMonitor
     touchSolid& solid =
         mesh_.lookupObjectRef<touchSolid>(touchSolid::typeName);
     solid.accountBoundaryWork(bodies_.cellBody(), bodies_.size());
+    friction_ = solid.boundaryWorkAccount()->friction();
 
     E0_ =
         solid.kineticEnergy() + solid.strainEnergy() + solid.potentialEnergy();
@@ -350,11 +356,14 @@ bool Foam::functionObjects::solidMonitor::execute()
     Pstream::listCombineGather(bodyWork, plusEqOp<scalar>());
     Pstream::listCombineScatter(bodyWork);
 
-    const scalar work = sum(bodyWork);
+    // The friction between bodies, out of the boundaries' work
+    const scalar friction =
+        friction_ ? -returnReduce(account.frictionWork(), sumOp<scalar>()) : 0;
+    const scalar work = sum(bodyWork) + friction;
     const scalar plastic =
         dissipates_ ? gSum(cellPlasticWork()()) - plastic0_ : 0;
     const scalar numerical =
-        E0_ + work - (kinetic + stored + potential + plastic);
+        E0_ + work - (kinetic + stored + potential + plastic + friction);
     const scalar reference = E0_ > 0 ? E0_ : E0_ + work;
 
     const scalarField sums
@@ -386,6 +395,10 @@ bool Foam::functionObjects::solidMonitor::execute()
         if (dissipates_)
         {
             os  << tab << plastic;
+        }
+        if (friction_)
+        {
+            os  << tab << friction;
         }
         os  << tab << work << tab << numerical
             << tab << (reference > 0 ? numerical/reference : 0);

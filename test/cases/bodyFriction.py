@@ -1,0 +1,395 @@
+#!/usr/bin/python3
+"""Coulomb friction between deformable bodies: a free oblique collision of
+two blocks, frictionless and with friction (issue 28, acceptance 3 and 5).
+
+    /usr/bin/python3 test/cases/bodyFriction.py
+
+The case (built here from tutorials/barCollision's files): two square
+blocks L = 0.1 m, N x N cells each (plane strain: one cell across, empty
+front and back), neo-Hookean, rho0 = 1400, E = 1.04e9, nu = 0.3
+(c_p = 1000 m/s, c_s = 535 m/s); block A on [-L, 0] x [0, L] at (v, w),
+block B on [0, L] x [L/2, 3L/2] at (-v, -w), v = w = 1 m/s: they touch at
+x = 0 along half of their faces, off their centres, and slide along each
+other at 2 w.  No wall, no clamp, no gravity; FUpdate plain,
+angularMomentumPreservation on, RK2, limitedLinear, to 6e-4 s (contact
+from 0 to about 2L/c_p = 2e-4 s).  Runs:
+
+  frictionless  no friction entry;
+  mu = 0        coulomb with muStatic = muKinetic = 0;
+  friction      coulomb with muStatic = muKinetic = 0.3 (the faces slide
+                throughout: the sticking traction needs Z_s/Z_p = 0.53 of
+                the normal one);
+  offset        friction, B's mesh (N + 2) x (N + 2): the faces that meet
+                do not match;
+  compatible    friction with FUpdate compatible: refused.
+
+Asserted:
+  - every run: total linear momentum constant to 1e-12 |p0| (|p0| the
+    sum of the bodies' |p|), total angular momentum about the origin (the
+    monitor's, current cell centres) constant to 1e-10 |L_A(0)|
+    (L_A(0) = block A's about the origin; the bodies' L add up to
+    -0.05 m |p_A|/sqrt 2), the total energy (kinetic + strain) never grows
+    (1e-12 E0 per step) and the numerical dissipation stays >= 0;
+  - mu = 0: lm, F, D and pointD at every written time equal the
+    frictionless run's byte for byte (the internal fields: the friction
+    run's U carries its friction and slip entries);
+  - friction, at every step (contact.dat, all stages of the step): the
+    faces' contact tractions within the cone, |t_t| <= mu |t_n| (1e-12),
+    and every pair's friction power <= 0; the monitor's friction
+    dissipation >= 0 and never decreasing, and within 1 % of the contact
+    patches' flux work with the opposite sign (a second, independent
+    account: the boundaries' work of the fluxes);
+  - friction against the closed form of sliding Coulomb friction: each
+    body's tangential impulse mu times its normal impulse, to within the
+    frictionless run's own tangential/normal impulse ratio (the tilt of
+    the contact normals at the deforming corners; 0.041 measured, asserted
+    < 0.2 mu); each body's spin change about its centroid equals the
+    angular impulse of its tangential impulse at the contact face (lever
+    L/2) plus that of its normal impulse at the middle of the overlap
+    (lever L/4) within 2 % (friction and frictionless runs); friction spins
+    block A against its sliding (its spin below the frictionless run's);
+    the relative tangential velocity at the end is below the frictionless
+    run's by at least half of 2 mu J_n/M;
+  - FUpdate compatible with friction is refused naming FUpdate and plain.
+Work folders: test/runs/bodyFriction/.
+"""
+
+import os
+import shutil
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "bin", "python"))
+
+import numpy as np  # noqa: E402
+
+from touchfoam import contact, monitor, run, testing  # noqa: E402
+from touchfoam.foamfile import read_field  # noqa: E402
+from touchfoam.mesh import PolyMesh  # noqa: E402
+
+NAME = "bodyFriction"
+N = 10
+L = 0.1
+V = 1.0
+W = 1.0
+MU = 0.3
+RHO = 1400.0
+END = 6e-4
+
+HEADER = """FoamFile
+{
+    version     2.0;
+    format      ascii;
+    class       %s;
+    object      %s;
+}
+"""
+
+BLOCKMESH = """
+scale 1;
+vertices
+(
+    (-%(L)g 0 0) (0 0 0) (0 %(L)g 0) (-%(L)g %(L)g 0)
+    (-%(L)g 0 %(h)g) (0 0 %(h)g) (0 %(L)g %(h)g) (-%(L)g %(L)g %(h)g)
+    (0 %(y0)g 0) (%(L)g %(y0)g 0) (%(L)g %(y1)g 0) (0 %(y1)g 0)
+    (0 %(y0)g %(h)g) (%(L)g %(y0)g %(h)g) (%(L)g %(y1)g %(h)g)
+    (0 %(y1)g %(h)g)
+);
+blocks
+(
+    hex (0 1 2 3 4 5 6 7) blockA (%(N)d %(N)d 1) simpleGrading (1 1 1)
+    hex (8 9 10 11 12 13 14 15) blockB (%(NB)d %(NB)d 1)
+        simpleGrading (1 1 1)
+);
+boundary
+(
+    faceA { type patch; faces ((1 2 6 5)); }
+    faceB { type patch; faces ((8 12 15 11)); }
+    free
+    {
+        type patch;
+        faces
+        (
+            (0 4 7 3) (0 1 5 4) (3 7 6 2)
+            (9 10 14 13) (8 9 13 12) (11 15 14 10)
+        );
+    }
+    frontAndBack
+    {
+        type empty;
+        faces ((0 3 2 1) (4 5 6 7) (8 11 10 9) (12 13 14 15));
+    }
+);
+"""
+
+MATERIAL = """
+model           neoHookean;
+rho             %g;
+E               1.04e9;
+nu              0.3;
+""" % RHO
+
+FIELD_U = """
+dimensions      [0 1 -1 0 0 0 0];
+internalField   uniform (0 0 0);
+boundaryField
+{
+    faceA { type bodyContact; %(friction)s value uniform (0 0 0); }
+    faceB { type bodyContact; %(friction)s value uniform (0 0 0); }
+    free { type traction; value uniform (0 0 0); }
+    frontAndBack { type empty; }
+}
+"""
+
+EXPRESSIONS = """
+expressions
+(
+    blockA
+    {
+        field U; keepPatches true;
+        expression #{ vector(%(v)g, %(w)g, 0) #};
+    }
+    blockB
+    {
+        field U; keepPatches true;
+        condition #{ pos().x() > 0 #};
+        expression #{ vector(%(mv)g, %(mw)g, 0) #};
+    }
+);
+"""
+
+
+def write(case, rel, cls, obj, body):
+    path = os.path.join(case, rel)
+    with open(path, "w") as f:
+        f.write(HEADER % (cls, obj) + body)
+
+
+def make_case(dst, friction=None, nb=N, update="plain"):
+    """The oblique collision at dst; friction: (muStatic, muKinetic) or
+    None; nb: block B's cells a side."""
+    run.copy_case(run.tutorial_dir("barCollision"), dst)
+    for name in ("0.orig", "0"):
+        shutil.rmtree(os.path.join(dst, name), ignore_errors=True)
+    os.makedirs(os.path.join(dst, "0"))
+    h = L / N
+    write(dst, "system/blockMeshDict", "dictionary", "blockMeshDict",
+          BLOCKMESH % {"L": L, "h": h, "y0": L / 2, "y1": 1.5 * L,
+                       "N": N, "NB": nb})
+    write(dst, "constant/mechanicalProperties", "dictionary",
+          "mechanicalProperties", MATERIAL)
+    text = "" if friction is None else (
+        "friction { type coulomb; muStatic %g; muKinetic %g; }" % friction)
+    write(dst, "0/U", "volVectorField", "U", FIELD_U % {"friction": text})
+    write(dst, "system/setExprFieldsDict", "dictionary", "setExprFieldsDict",
+          EXPRESSIONS % {"v": V, "w": W, "mv": -V, "mw": -W})
+    run.foam_set(dst, "system/fvSolution", "TOUCH/FUpdate", update)
+    run.foam_set(dst, "system/fvSolution",
+                 "TOUCH/angularMomentumPreservation", "on")
+    run.foam_set(dst, "system/controlDict", "endTime", END)
+    run.foam_set(dst, "system/controlDict", "writeInterval", 2e-4)
+    run.foam_set(dst, "system/controlDict",
+                 "functions/solidMonitor/writePrecision", 17)
+    run.run(["blockMesh"], dst)
+    run.run(["setExprFields"], dst)
+    return dst
+
+
+def internal_text(path):
+    """The internalField entry of a field file, as written."""
+    with open(path) as f:
+        text = f.read()
+    start = text.index("internalField")
+    return text[start:text.index("boundaryField", start)]
+
+
+def bodies(case, time_name, n_a):
+    """Per block: momentum, centroid and angular momentum about it, from
+    the written lm and D (x = C + D) and the cell volumes."""
+    mesh = PolyMesh(case)
+    X = mesh.cell_centres
+    vol = mesh.cell_volumes
+    n = len(X)
+    folder = os.path.join(case, time_name)
+    if os.path.exists(os.path.join(folder, "lm")):
+        lm = read_field(os.path.join(folder, "lm")).internal(n)
+        D = read_field(os.path.join(folder, "D")).internal(n)
+    else:
+        # The start: 0/U and no displacement
+        lm = RHO * read_field(os.path.join(folder, "U")).internal(n)
+        D = np.zeros_like(lm)
+    x = X + D
+    out = []
+    for cells in (slice(0, n_a), slice(n_a, n)):
+        Vc = vol[cells][:, None]
+        p = np.sum(Vc * lm[cells], axis=0)
+        xc = np.sum(Vc * x[cells], axis=0) / np.sum(Vc)
+        spin = np.sum(np.cross(x[cells] - xc, Vc * lm[cells]), axis=0)
+        out.append({"p": p, "xc": xc, "spin": spin[2], "M": RHO * Vc.sum()})
+    return out
+
+
+def invariants(case, label, failures, lines):
+    m = monitor.read_monitor(case)
+    p, Lm = m["p"], m["L"]
+    pA = RHO * L * L * (L / N) * np.hypot(V, W)
+    p0 = 2 * pA
+    LA = pA * np.hypot(0.5 * L, 0.5 * L)
+    dp = np.max(np.abs(p - p[0])) / p0
+    dL = np.max(np.abs(Lm - Lm[0])) / LA
+    e = m["totalEnergy"]
+    growth = np.max(np.diff(e)) / e[0]
+    num = m["numericalDissipation"]
+    lines.append("%s: %d steps, |dp| %.1e |p0|, |dL| %.1e |L_A|, energy "
+                 "step %+.1e E0, end %.4f E0" % (label, len(e), dp, dL,
+                                                growth, e[-1] / e[0]))
+    if dp > 1e-12:
+        failures.append("%s: momentum drift %.2e |p0|" % (label, dp))
+    if dL > 1e-10:
+        failures.append("%s: angular momentum drift %.2e |L_A|"
+                        % (label, dL))
+    if growth > 1e-12:
+        failures.append("%s: energy grew by %.2e E0 in a step"
+                        % (label, growth))
+    if np.min(num) < -1e-12 * e[0]:
+        failures.append("%s: numerical dissipation %.2e E0 < 0"
+                        % (label, np.min(num) / e[0]))
+    return m
+
+
+def body():
+    root = testing.work_dir(NAME)
+    failures, lines = [], []
+
+    none = make_case(os.path.join(root, "frictionless"))
+    zero = make_case(os.path.join(root, "mu0"), friction=(0, 0))
+    fric = make_case(os.path.join(root, "friction"), friction=(MU, MU))
+    offs = make_case(os.path.join(root, "offset"), friction=(MU, MU),
+                     nb=N + 2)
+    for case in (none, zero, fric, offs):
+        run.run(["touchFoam"], case, timeout=testing.RUN_TIMEOUT)
+
+    invariants(none, "frictionless", failures, lines)
+    invariants(zero, "mu 0", failures, lines)
+    mFric = invariants(fric, "friction", failures, lines)
+    invariants(offs, "friction, faces not matching", failures, lines)
+
+    # mu = 0: byte-equal to frictionless
+    times = sorted(t for t in run.time_dirs(none) if t > 0)
+    differ = []
+    for t in times:
+        name = run.time_dirs(none)[t]
+        for field in ("lm", "F", "D", "pointD"):
+            a = internal_text(os.path.join(none, name, field))
+            b = internal_text(os.path.join(zero, run.time_dirs(zero)[t],
+                                           field))
+            if a != b:
+                differ.append("%s at %s" % (field, name))
+    lines.append("mu 0 = frictionless: %d times x 4 fields, %d differ"
+                 % (len(times), len(differ)))
+    if differ or not times:
+        failures.append("mu = 0 differs from frictionless: %s"
+                        % ", ".join(differ[:4]))
+
+    # Coulomb cone and friction power, every step
+    for case, label in ((fric, "friction"), (offs, "offset")):
+        rows = contact.read_contact(case)
+        ratio = np.max(rows["maxFrictionRatio"])
+        power = np.max(rows["maxPairFrictionPower"])
+        lines.append("%s: max |t_t|/|t_n| %.6f (mu %g), max pair friction "
+                     "power %.1e W" % (label, ratio, MU, power))
+        if ratio > MU * (1 + 1e-12):
+            failures.append("%s: |t_t|/|t_n| = %.15g > mu" % (label, ratio))
+        if power > 0:
+            failures.append("%s: a pair's friction power %.2e > 0"
+                            % (label, power))
+
+    # Friction dissipation: >= 0, growing, and the fluxes' account
+    Df = mFric["frictionDissipation"]
+    flux = mFric["boundaryWork(faceA)"] + mFric["boundaryWork(faceB)"]
+    gap = abs(Df[-1] + flux[-1]) / max(Df[-1], 1e-300)
+    E0 = mFric["totalEnergy"][0]
+    lines.append("friction dissipation %.4e E0 at the end, min step "
+                 "%+.1e E0, the contact fluxes' work %.4e E0 (%.2e off)"
+                 % (Df[-1] / E0, np.min(np.diff(Df)) / E0, flux[-1] / E0,
+                    gap))
+    if np.min(Df) < 0 or np.min(np.diff(Df)) < -1e-15 * E0:
+        failures.append("friction dissipation negative or decreasing")
+    if Df[-1] < 1e-3 * E0:
+        failures.append("friction dissipation %.2e E0: no friction"
+                        % (Df[-1] / E0))
+    if gap > 0.01:
+        failures.append("friction dissipation off the contact fluxes' "
+                        "work by %.2e" % gap)
+
+    # Sliding Coulomb friction: impulses, relative velocity, spin
+    def impulses(case):
+        folders = run.time_dirs(case)
+        b0 = bodies(case, folders[0.0], N * N)
+        b1 = bodies(case, folders[max(folders)], N * N)
+        return b0, b1, [b1[k]["p"] - b0[k]["p"] for k in (0, 1)]
+
+    b0, bF, jF = impulses(fric)
+    _, bN, jN = impulses(none)
+    tilt = abs(jN[0][1] / jN[0][0])
+    for k, label in enumerate("AB"):
+        ratio = abs(jF[k][1] / jF[k][0])
+        lines.append("block %s: impulse normal %.4e, tangential %.4e, ratio "
+                     "%.4f (frictionless %.4f)"
+                     % (label, jF[k][0], jF[k][1], ratio, tilt))
+        if abs(ratio - MU) > tilt:
+            failures.append("block %s: tangential/normal impulse %.4f, "
+                            "sliding Coulomb %g, frictionless %.4f"
+                            % (label, ratio, MU, tilt))
+    if tilt > 0.2 * MU:
+        failures.append("frictionless: tangential/normal impulse %.4f"
+                        % tilt)
+    # Spin: the angular impulse about each centroid of the friction at the
+    # contact face (L/2 from the centre along x) and of the normal force at
+    # the middle of the overlap (L/4 from it along y), closed forms
+    for case, b1, j, label in ((fric, bF, jF, "friction"),
+                               (none, bN, jN, "frictionless")):
+        for k, side in enumerate((1, -1)):
+            dspin = b1[k]["spin"] - b0[k]["spin"]
+            friction = side * 0.5 * L * j[k][1]
+            normal = -side * 0.25 * L * j[k][0]
+            off = abs(dspin - friction - normal) / (abs(friction)
+                                                    + abs(normal))
+            lines.append("%s block %s: spin %.4e, angular impulses: "
+                         "tangential %.4e + normal %.4e (%.1e off)"
+                         % (label, "AB"[k], dspin, friction, normal, off))
+            if off > 0.02:
+                failures.append("%s block %s: spin %.4e, angular impulse "
+                                "%.4e" % (label, "AB"[k], dspin,
+                                          friction + normal))
+    fSpin = bF[0]["spin"] - bN[0]["spin"]
+    if fSpin >= 0:
+        failures.append("friction did not spin block A against its sliding")
+    wF = bF[0]["p"][1] / bF[0]["M"] - bF[1]["p"][1] / bF[1]["M"]
+    wN = bN[0]["p"][1] / bN[0]["M"] - bN[1]["p"][1] / bN[1]["M"]
+    coulomb = 2 * MU * abs(jF[0][0]) / bF[0]["M"]
+    lines.append("relative tangential velocity at the end %.4f m/s "
+                 "(frictionless %.4f, start %.1f; 2 mu J_n/M %.4f)"
+                 % (wF, wN, 2 * W, coulomb))
+    if wN - wF < 0.5 * coulomb:
+        failures.append("relative tangential velocity %.4f, frictionless "
+                        "%.4f: not reduced" % (wF, wN))
+
+    # FUpdate compatible with friction is refused
+    comp = make_case(os.path.join(root, "compatible"), friction=(MU, MU),
+                     update="compatible")
+    try:
+        run.run(["touchFoam"], comp, name="touchFoam",
+                timeout=testing.RUN_TIMEOUT)
+        failures.append("compatible with friction ran")
+    except run.RunError:
+        with open(os.path.join(comp, "log.touchFoam")) as f:
+            log = f.read()
+        if "FUpdate" not in log or "plain" not in log:
+            failures.append("compatible with friction: the refusal does "
+                            "not name FUpdate and plain")
+    return testing.verdict(lines, failures)
+
+
+if __name__ == "__main__":
+    sys.exit(testing.run_test(NAME, body))
