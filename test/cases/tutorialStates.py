@@ -55,6 +55,7 @@ TUTORIALS = {
     "ringImpact": ["-n", "24"],
     "torusImpact": ["-n", "4"],
     "slidingBlock": ["-n", "2"],
+    "sphereImpact": ["-n", "2"],
 }
 LIMITS = {"coloured": (0.005, 0.95), "hueBins": 3, "hueShare": 1e-3}
 
