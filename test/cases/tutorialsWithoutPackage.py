@@ -71,6 +71,7 @@ TUTORIALS = [
     ("torusImpact", ["-n", "4"], ((0.0, -3.0, 0.0), (0, 0, 0)), True),
     ("slidingBlock", ["-n", "2"], ((1.0, 0.0, 0.0), (0, 0, 0)), True),
     ("barCollision", ["-n", "10"], BARS, True),
+    ("sphereImpact", ["-n", "2"], ((0.0, -10.0, 0.0), (0, 0, 0)), True),
 ]
 
 

@@ -22,7 +22,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 
 import numpy as np  # noqa: E402
 
-from touchfoam import analytic, checks, foamfile, gmsh  # noqa: E402
+from touchfoam import analytic, checks, foamfile, gmsh, hertz  # noqa: E402
 from touchfoam import mesh, monitor  # noqa: E402
 from touchfoam import run as frun  # noqa: E402
 from touchfoam.cases import prepare  # noqa: E402
@@ -297,6 +297,33 @@ def geometry_matches_openfoam(tmp):
         worst.append("%s %d cells: |dC| %.1e, |dV|/V %.1e"
                      % (tutorial, m.n_cells, ec, ev))
     return "; ".join(worst)
+
+
+@test
+def hertz_closed_form(tmp):
+    """Hertz: two equal balls at +-V/2 are one ball on a wall at V/2 (each
+    ball's share of the approach), the closed form's t_c = 2.94 delta/V
+    against its other form 2.868 (m*^2/(R* E*^2 V))^(1/5) and against the
+    integrated m* delta'' = -4/3 E* sqrt(R*) delta^(3/2)."""
+    wall = hertz.closed_form(5.0, 0.01, 2e11, 0.3, 7800)
+    pair = hertz.closed_form(10.0, 0.01, 2e11, 0.3, 7800,
+                             0.01, 2e11, 0.3, 7800)
+    eF = abs(pair["F"] / wall["F"] - 1)
+    ed = abs(pair["delta"] / (2 * wall["delta"]) - 1)
+    assert eF < 1e-12 and ed < 1e-12, (eF, ed)
+    r = hertz.closed_form(10.0, 0.01, 7e10, 0.33, 2700,
+                          0.02, 2e11, 0.3, 7800)
+    other = 2.868 * (r["mstar"] ** 2 / (r["Rstar"] * r["Estar"] ** 2
+                                        * 10.0)) ** 0.2
+    e_form = abs(other / r["tc"] - 1)
+    assert e_form < 2e-3, e_form
+    t, F = hertz.force_curve(r, 10.0)
+    e_ode = abs(t[-1] / r["tc"] - 1)
+    e_peak = abs(F.max() / r["F"] - 1)
+    assert e_ode < 3e-3 and e_peak < 1e-6, (e_ode, e_peak)
+    return ("pair = wall at V/2 to %.0e; t_c forms agree to %.1e, the ODE's "
+            "t_c to %.1e, its peak force to %.0e" % (max(eF, ed), e_form,
+                                                   e_ode, e_peak))
 
 
 def main():
