@@ -80,7 +80,8 @@ void Foam::solidFaces::forAllSolidPatches
 (
     const mechanicalLaw& law,
     const label stage,
-    Op op
+    Op op,
+    const bool decide
 )
 {
     if (!materialFilled_)
@@ -89,7 +90,7 @@ void Foam::solidFaces::forAllSolidPatches
     }
 
     // The contact needs every contact patch's state before any flux
-    if (contact_.valid())
+    if (decide && contact_.valid())
     {
         updateContact(stage);
     }
@@ -121,7 +122,10 @@ void Foam::solidFaces::forAllSolidPatches
         solidFluxFvPatchVectorField& condition =
             refCast<solidFluxFvPatchVectorField>(lm_.boundaryFieldRef()[patchi]);
 
-        condition.updateActiveSet(state);
+        if (decide)
+        {
+            condition.updateActiveSet(state);
+        }
 
         op(patch, condition, state, reference);
     }

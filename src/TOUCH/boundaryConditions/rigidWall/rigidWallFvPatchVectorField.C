@@ -527,6 +527,7 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     lowestFreePoint_(false),
     contact_(p.size(), false),
     stepContact_(contact_),
+    earlierContact_(contact_),
     stepForce_(Zero),
     nStages_(0),
     stageForce_(Zero),
@@ -559,6 +560,7 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     lowestFreePoint_(wallTouchingEntry.read(dict) == "lowestFreePoint"),
     contact_(readContact(p, dict)),
     stepContact_(contact_),
+    earlierContact_(contact_),
     stepForce_(Zero),
     nStages_(0),
     stageForce_(Zero),
@@ -590,6 +592,7 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     // stopped reconstructPar with a floating point exception
     contact_(toBool(scalarField(toScalar(ptf.contact_), mapper, scalar(0)))),
     stepContact_(contact_),
+    earlierContact_(contact_),
     stepForce_(Zero),
     nStages_(0),
     stageForce_(Zero),
@@ -620,6 +623,7 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     lowestFreePoint_(ptf.lowestFreePoint_),
     contact_(ptf.contact_),
     stepContact_(ptf.stepContact_),
+    earlierContact_(ptf.earlierContact_),
     stepForce_(ptf.stepForce_),
     nStages_(ptf.nStages_),
     stageForce_(ptf.stageForce_),
@@ -643,6 +647,7 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     lowestFreePoint_(ptf.lowestFreePoint_),
     contact_(ptf.contact_),
     stepContact_(ptf.stepContact_),
+    earlierContact_(ptf.earlierContact_),
     stepForce_(ptf.stepForce_),
     nStages_(ptf.nStages_),
     stageForce_(ptf.stageForce_),
@@ -691,6 +696,7 @@ void Foam::rigidWallFvPatchVectorField::updateActiveSet
         stepForce_ = Zero;
         nStages_ = 0;
     }
+    earlierContact_ = stepContact_;
     ++nStages_;
     stageForce_ = Zero;
 
@@ -752,6 +758,50 @@ void Foam::rigidWallFvPatchVectorField::correctStageForce
 {
     stepForce_ += force - stageForce_;
     stageForce_ = force;
+}
+
+
+Foam::label Foam::rigidWallFvPatchVectorField::releaseTensile
+(
+    const vectorField& faceForce
+)
+{
+    // The wall pushes as a whole: nothing to release.  Else every face
+    // whose force pulls is released at once: a mirror-symmetric body
+    // keeps its symmetry (releasing only the face that pulls most chose
+    // one of two mirror faces, and the falling ring spun up to 2e-4
+    // |p| R; ringAngularMomentum).  Releasing every face that pulls
+    // whatever the total let the Taylor bar's impact face chatter
+    // (contactGeometry)
+    scalar total = 0;
+    forAll(contact_, facei)
+    {
+        if (contact_[facei])
+        {
+            total += faceForce[facei] & normal_;
+        }
+    }
+    if (returnReduce(total, sumOp<scalar>()) >= 0)
+    {
+        return 0;
+    }
+
+    label released = 0;
+    forAll(contact_, facei)
+    {
+        if (contact_[facei] && (faceForce[facei] & normal_) < 0)
+        {
+            contact_[facei] = false;
+            stepContact_[facei] = earlierContact_[facei];
+            if (!friction_->frictionless())
+            {
+                frictionTraction_[facei] = Zero;
+            }
+            ++released;
+        }
+    }
+
+    return released;
 }
 
 
@@ -832,6 +882,7 @@ void Foam::rigidWallFvPatchVectorField::autoMap(const fvPatchFieldMapper& m)
     contact.autoMap(m);
     contact_ = toBool(contact);
     stepContact_ = contact_;
+    earlierContact_ = contact_;
 
     if (!friction_->frictionless())
     {
@@ -856,6 +907,7 @@ void Foam::rigidWallFvPatchVectorField::rmap
     contact.rmap(toScalar(wptf.contact_), addr);
     contact_ = toBool(contact);
     stepContact_ = contact_;
+    earlierContact_ = contact_;
 
     if (!friction_->frictionless())
     {

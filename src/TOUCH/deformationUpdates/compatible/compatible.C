@@ -63,6 +63,24 @@ static inline void spreadToPoints
     }
 }
 
+//- Whether a condition of lm releases its faces on the force applied
+static bool releasesOnForce(const volVectorField& lm)
+{
+    for (const fvPatchVectorField& pf : lm.boundaryField())
+    {
+        if
+        (
+            !pf.patch().coupled()
+         && isA<solidFluxFvPatchVectorField>(pf)
+         && refCast<const solidFluxFvPatchVectorField>(pf).releasesOnForce()
+        )
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
 } // End namespace Foam
 
 
@@ -457,7 +475,8 @@ void Foam::deformationUpdates::compatible::addBoundaryRate
 (
     const label stage,
     vectorField& lmRate,
-    vector& torque
+    vector& torque,
+    const bool decide
 )
 {
     const vectorField& lm = faces_.lm().primitiveField();
@@ -540,6 +559,17 @@ void Foam::deformationUpdates::compatible::addBoundaryRate
             }
             faceForce_[patchi] = faceForce;
 
+            // Per face, for a condition released on the force applied
+            if (releaseFaceForce_.set(patchi))
+            {
+                vectorField& force = releaseFaceForce_[patchi];
+                forAll(faceCells, i)
+                {
+                    const tensor fixed(tensor::I - free[i]);
+                    force[i] = (tC[i] - (fixed & state.t[i]))*magSf[i];
+                }
+            }
+
             // The torque of a wall is that of the force it applies: the
             // faces' part above and the constraint's reaction at the
             // points (reportWallForces), not the flux's central traction
@@ -572,7 +602,8 @@ void Foam::deformationUpdates::compatible::addBoundaryRate
                     );
                 }
             }
-        }
+        },
+        decide
     );
 }
 
@@ -674,7 +705,9 @@ Foam::deformationUpdates::compatible::compatible
     upwindNormal_(0),
     upwindTangential_(0),
     upwindInline_(riemann.upwindCoefficients(upwindNormal_, upwindTangential_)),
-    hasContact_(contactSurfaces::any(faces.lm()))
+    hasContact_(contactSurfaces::any(faces.lm())),
+    releasing_(releasesOnForce(faces.lm())),
+    releaseFaceForce_(faces.mesh().boundary().size())
 {
     forAll(faces.mesh().boundary(), patchi)
     {
@@ -682,6 +715,17 @@ Foam::deformationUpdates::compatible::compatible
 
         faceFree_.set(patchi, new tensorField(n, tensor::I));
         faceVelocity_.set(patchi, new vectorField(n, Zero));
+
+        const fvPatchVectorField& bf = faces.lm().boundaryField()[patchi];
+        if
+        (
+            !bf.patch().coupled()
+         && isA<solidFluxFvPatchVectorField>(bf)
+         && refCast<const solidFluxFvPatchVectorField>(bf).releasesOnForce()
+        )
+        {
+            releaseFaceForce_.set(patchi, new vectorField(n, Zero));
+        }
 
         // Contact between bodies: its faces' points keep the contact
         // velocity along the pair's normal (with the traction alone they
@@ -730,21 +774,23 @@ void Foam::deformationUpdates::compatible::rates
         pointForcing_->addPointForces(shares_, pointForce_);
     }
 
+    // The nodal forces are the stresses' alone: complete before the
+    // conditions, so that a wall can be released on its reaction to them
+    completeNodalForces();
+
     const bool tally = upwindLoss_.valid() && stage == 1;
     if (tally)
     {
         tallyFaceLosses();
         const vectorField before(lmRate);
-        addBoundaryRate(stage, lmRate, torque);
+        addConditionRates(stage, lmRate, torque);
         tallyCellLosses(before, lmRate);
     }
     else
     {
-        addBoundaryRate(stage, lmRate, torque);
+        addConditionRates(stage, lmRate, torque);
     }
 
-    constraints_.finalise();
-    completeNodalForces();
     reportWallForces(torque);
     balanceContactForces(lmRate);
 

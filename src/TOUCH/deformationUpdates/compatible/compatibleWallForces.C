@@ -17,6 +17,115 @@ Description
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
+void Foam::deformationUpdates::compatible::addConditionRates
+(
+    const label stage,
+    vectorField& lmRate,
+    vector& torque
+)
+{
+    if (!releasing_)
+    {
+        addBoundaryRate(stage, lmRate, torque, true);
+        constraints_.finalise();
+        return;
+    }
+
+    rateBeforeConditions_ = lmRate;
+    reconstructedBeforeConditions_ = reconstructedForce_;
+    const vector torqueBefore(torque);
+
+    addBoundaryRate(stage, lmRate, torque, true);
+    constraints_.finalise();
+
+    // A face whose wall solution pushes (t_W > 0) can still be pulled on
+    // by the force the update applies: the central traction reaches the
+    // momentum as the constraint's reaction at the face's points, which
+    // neighbouring cells load, and the damping pulls where the cell moves
+    // off the wall.  Released, such a face is traction-free and its points
+    // free where no other face holds them; each pass releases at least one
+    // face, so the passes end
+    while (releaseTensileFaces())
+    {
+        lmRate = rateBeforeConditions_;
+        reconstructedForce_ = reconstructedBeforeConditions_;
+        torque = torqueBefore;
+
+        constraints_.reset();
+        addBoundaryRate(stage, lmRate, torque, false);
+        constraints_.finalise();
+    }
+}
+
+
+bool Foam::deformationUpdates::compatible::releaseTensileFaces()
+{
+    const fvMesh& mesh = faces_.mesh();
+    label released = 0;
+
+    forAll(mesh.boundary(), patchi)
+    {
+        if (!releaseFaceForce_.set(patchi))
+        {
+            continue;
+        }
+
+        const fvPatch& patch = mesh.boundary()[patchi];
+        solidFluxFvPatchVectorField& condition =
+            refCast<solidFluxFvPatchVectorField>
+            (
+                faces_.lm().boundaryFieldRef()[patchi]
+            );
+        const labelList& meshPoints = patch.patch().meshPoints();
+        const faceList& localFaces = patch.patch().localFaces();
+        const tensorField& free = faceFree_[patchi];
+
+        // Per point of the patch, the number of its faces that fix a
+        // direction there, on all ranks (every rank takes part in the
+        // sync, also one whose part of the patch is empty)
+        labelList holding(meshPoints.size(), 0);
+        forAll(localFaces, i)
+        {
+            if (magSqr(tensor::I - free[i]) > SMALL)
+            {
+                for (const label pointj : localFaces[i])
+                {
+                    ++holding[pointj];
+                }
+            }
+        }
+        syncTools::syncPointList
+        (
+            mesh, meshPoints, holding, plusEqOp<label>(), label(0)
+        );
+
+        // Each face's damping and its shares of the reaction: summed over
+        // the faces of all ranks, the force reportWallForces gives
+        vectorField force(releaseFaceForce_[patchi]);
+        forAll(localFaces, i)
+        {
+            const tensor fixed(tensor::I - free[i]);
+            if (magSqr(fixed) > SMALL)
+            {
+                for (const label pointj : localFaces[i])
+                {
+                    const label pointi = meshPoints[pointj];
+                    force[i] +=
+                        (
+                            fixed
+                          & constraints_.reaction(pointi, pointForce_[pointi])
+                        )/holding[pointj];
+                }
+            }
+        }
+
+        released += condition.releaseTensile(force);
+    }
+
+    return returnReduce(released, sumOp<label>()) > 0;
+}
+
+
 void Foam::deformationUpdates::compatible::reportWallForces
 (
     vector& torque
