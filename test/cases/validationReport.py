@@ -7,7 +7,8 @@ check of every study, FAIL rows first, and the run times.
 Builds a copy of the project in test/runs/validationReport/ (every
 top-level entry a link to the project's, validation/ a fresh folder with
 the project's validation/Allrun), so that the project's own
-validationQuick/ is left alone, with three studies:
+validationQuick/ and validation/README.md are left alone, with three
+studies:
 
   swingingCube   the project's study (validation/swingingCube, its -quick
                  size: meshes 4 8 16, linear), whose script records its
@@ -18,7 +19,10 @@ validationQuick/ is left alone, with three studies:
   plantedNone    a made-up study that records nothing and exits 0.
 
 Runs 'validation/Allrun -quick swingingCube plantedFail plantedNone' there
-and asserts: its exit status is 1; validationQuick/README.md has a Checks
+and asserts: its exit status is 1; validation/README.md says at its top
+that it is a quick run, with the date, the commit and the total run time
+(the same as the total row), and links each study to
+../validationQuick/<study>; it has a Checks
 table with one row per recorded check (as many as the checks.json files
 hold) plus one for plantedNone, every row 'pass' or '**FAIL**'; the
 planted failing check and plantedNone's 'no check recorded' row are
@@ -101,8 +105,17 @@ def body():
     if proc.returncode != 1:
         failures.append("validation/Allrun exit status %d, expected 1 (a "
                         "planted failure)" % proc.returncode)
-    with open(os.path.join(root, "validationQuick", "README.md")) as f:
+    with open(os.path.join(root, "validation", "README.md")) as f:
         report = f.read()
+    top = report.split("\n## ", 1)[0]
+    head = re.search(r"\*\*Quick run\*\*.*?(\d{4}-\d\d-\d\d) .*?commit "
+                     r"(\w+).*?total run time (\d+) s", top, re.S)
+    if not head:
+        failures.append("the report's top does not say quick run, date, "
+                        "commit and total run time: %r" % top[:400])
+    for study in ("swingingCube", "plantedFail", "plantedNone"):
+        if "](../validationQuick/%s)" % study not in report:
+            failures.append("no link to ../validationQuick/%s" % study)
     rows = section(report, "Checks")
     recorded = {}
     for study in ("swingingCube", "plantedFail"):
@@ -145,6 +158,12 @@ def body():
         failures.append("run times %s, total %s" % (times, total))
     else:
         lines.append("run times %s s, total %s s" % (times, total[4]))
+    if head and total and head.group(3) != total[4]:
+        failures.append("total run time at the top %s s, in the table %s s"
+                        % (head.group(3), total[4]))
+    elif head:
+        lines.append("top: quick run, %s, commit %s, %s s"
+                     % head.group(1, 2, 3))
     return testing.verdict(lines, failures)
 
 

@@ -61,7 +61,9 @@ Writes results.json, results.md, column.png, cube.png, and the tables into
 README.md between '<!-- results -->' and '<!-- /results -->'.  --no-run
 re-analyses runs/.  Needs etc/bashrc and ccx.  The CalculiX side is in
 ccx.py; the comparisons (fastest as accurate, equal wall time), the tables
-and the plots in report.py.
+and the plots in report.py; the checks against the converged twist and the
+closed form (checks.json, exit status 1 when one fails) in
+calculixChecks.py.
 """
 
 import argparse
@@ -84,6 +86,7 @@ from touchfoam import analytic, cases, provenance, run  # noqa
 from touchfoam.foamfile import read_field  # noqa: E402
 from touchfoam.mesh import PolyMesh  # noqa: E402
 
+import calculixChecks  # noqa: E402
 import ccx  # noqa: E402
 import report  # noqa: E402
 from cubeErrors import (CUBE_END, check_cube_material,  # noqa: E402
@@ -558,8 +561,10 @@ def main():
         json.dump(results, f, indent=1)
     report.write_reports(results)
     report.plot(results)
-    print("wrote results.json, results.md")
-    return 0
+    status = calculixChecks.record(results)
+    print("wrote results.json, results.md, checks.json (%s)"
+          % ("every check passes" if status == 0 else "a check FAILS"))
+    return status
 
 
 if __name__ == "__main__":

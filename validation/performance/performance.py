@@ -32,7 +32,11 @@ serial and on 2 ranks (decomposePar, -method, default scotch): parallel
 efficiency T1/(2 T2), T the s/step of each (the master rank's CPU time;
 Open MPI polls while it waits, so it is close to the wall time).
 
-Writes results.json and results.md; -no-run re-reads runs/.
+Writes results.json and results.md; -no-run re-reads runs/.  Checks
+(checks.json, gathered by validation/Allrun; exit status 1 when one
+fails): the net peak memory per cell of every run <= 2.5 kB, and the time
+ratios to the baseline measured side by side (RATIO_BOUNDS: RK3 in [1.15,
+2.5], firstOrder <= 1.2); no absolute timing is checked.
 """
 
 import argparse
@@ -49,7 +53,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
 
-from touchfoam import cases, run  # noqa: E402
+from touchfoam import cases, checks, run  # noqa: E402
 from touchfoam.provenance import build_label  # noqa: E402
 
 import traffic  # noqa: E402
@@ -471,6 +475,46 @@ def markdown(res):
     return "\n".join(lines) + "\n"
 
 
+# -- checks ----------------------------------------------------------------
+
+#: Time ratios to the baseline measured side by side in one run (CPU time,
+#: the fastest repetition), with generous bounds for a shared machine:
+#: (variant, low, high, why)
+RATIO_BOUNDS = [
+    ("RK3", 1.15, 2.5, "three stages against two: 1.5 (measured 1.39 / "
+     "1.37 / 2.08 on 10k / 100k / 1M cells, 2026-12-02)"),
+    ("firstOrder", 0.0, 1.2, "no gradient and no limiter: less work than "
+     "the baseline (measured 0.79 / 0.71 / 0.80)"),
+]
+#: Peak memory per cell, the fixed cost of the libraries taken off (net):
+#: measured 1.45-2.06 kB over every variant and size, 2026-12-02
+MAX_NET_KB_PER_CELL = 2.5
+
+
+def record_checks(res):
+    """checks.json (validation/Allrun): time ratios measured side by side
+    and the net memory per cell; no absolute timing is checked.  Returns
+    the exit status."""
+    checks.start(HERE)
+    for r in res["runs"]:
+        checks.record(HERE, "net peak memory per cell, %s, %d cells"
+                      % (r["variant"], r["cells"]), r["netKBPerCell"],
+                      "<= %g kB" % MAX_NET_KB_PER_CELL,
+                      r["netKBPerCell"] <= MAX_NET_KB_PER_CELL,
+                      "peak minus the 48-cell run's (the libraries)")
+    for name, lo, hi, why in RATIO_BOUNDS:
+        for r in res["runs"]:
+            if r["variant"] != name or r["timeRatio"] is None:
+                continue
+            checks.record(HERE, "time a step %s / baseline, %d cells"
+                          % (name, r["cells"]), r["timeRatio"],
+                          "[%g, %g]" % (lo, hi) if lo > 0 else "<= %g" % hi,
+                          lo <= r["timeRatio"] <= hi,
+                          "%s; %d timed steps, fastest of %d"
+                          % (why, r["timedSteps"], r["repeats"]))
+    return checks.status(HERE)
+
+
 # -- main ------------------------------------------------------------------
 
 def main():
@@ -554,7 +598,11 @@ def main():
     with open(os.path.join(HERE, "results.md"), "w") as f:
         f.write(md)
     print(md)
+    status = record_checks(res)
+    print("checks.json: %s" % ("every check passes" if status == 0
+                               else "a check FAILS"))
+    return status
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

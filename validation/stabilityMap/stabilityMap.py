@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Stability map of the twisting column: where the scheme holds and where not.
 
-    ./stabilityMap.py --quick                       (5 runs, ~10 s)
+    ./stabilityMap.py --quick                       (7 runs, ~20 s)
     ./stabilityMap.py --preset baseline             (35 runs, ~8 min)
     ./stabilityMap.py [--n 2 3 4 8] [--nu 0.45 0.499 0.4999]
                       [--cfl 0.3 0.5 0.6 0.7 0.9]
@@ -65,7 +65,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
 
-from touchfoam import cases, gmsh, postprocess, run  # noqa: E402
+from touchfoam import cases, checks, gmsh, postprocess, run  # noqa: E402
 from touchfoam.foamfile import read_field  # noqa: E402
 from touchfoam.mesh import PolyMesh  # noqa: E402
 from touchfoam.monitor import read_monitor  # noqa: E402
@@ -94,12 +94,18 @@ def grid(**kw):
 
 
 PRESETS = {
-    # 4 x 24 x 4 at two CFL numbers and both schemes, one polyhedral run
+    # 4 x 24 x 4 at two CFL numbers and both schemes, one polyhedral run,
+    # and each other FUpdate at its stated RK2 limit (ENVELOPE): every row
+    # inside the envelope, so every row a check
     "quick": [
         grid(mesh=["hex"], n=[4], nu=[0.45], cfl=[0.3, 0.6],
              update=["compatible"], scheme=["RK2", "RK3"]),
         grid(mesh=["poly"], n=[4], nu=[0.45], cfl=[0.3],
              update=["compatible"], scheme=["RK2"]),
+        grid(mesh=["hex"], n=[4], nu=[0.45], cfl=[0.9],
+             update=["constrained"], scheme=["RK2"]),
+        grid(mesh=["hex"], n=[4], nu=[0.45], cfl=[0.3],
+             update=["plain"], scheme=["RK2"]),
     ],
     # The default update across CFL and mesh size, nu -> 0.5, polyhedra,
     # tetrahedra
@@ -116,6 +122,68 @@ PRESETS = {
              update=["compatible"], scheme=["RK2"]),
     ],
 }
+
+
+#: The envelope the project states (doc/method.md section 8, the updates'
+#: stableCFL): {(FUpdate, timeScheme): (largest CFL, the same on the very
+#: coarse n = 2 column, largest energy growth in a step / E0)}.  The
+#: compatible and plain updates never gain energy inside it; the
+#: constrained update's own statement (constrained.C) is a growth of at
+#: most 1e-3 E0 in a step at any CFL, and a run to the end
+ENVELOPE = {
+    ("compatible", "RK2"): (0.6, 0.3, 0.0),
+    ("compatible", "RK3"): (1.0, 0.8, 0.0),
+    ("constrained", "RK2"): (0.9, 0.9, 1e-3),
+    ("constrained", "RK3"): (1.0, 1.0, 1e-3),
+    ("plain", "RK2"): (0.3, 0.3, 0.0),
+    ("plain", "RK3"): (0.4, 0.4, 0.0),
+}
+
+
+def envelope(s):
+    """(largest CFL, energy growth bound) of setting s."""
+    cfl, coarse, growth = ENVELOPE[(s["update"], s["scheme"])]
+    return (coarse if s["n"] <= 2 else cfl), growth
+
+
+def inside(s):
+    return s["cfl"] <= envelope(s)[0] + 1e-12
+
+
+def record_checks(rows, preset):
+    """One check for every row inside the envelope: it reached the end,
+    its energy never grew by more than the envelope's bound in a step,
+    and min J > 0.  Rows outside are in the table, not asserted.  The
+    quick preset must cover both time schemes and every FUpdate."""
+    checks.start(HERE)
+    for r in rows:
+        if not inside(r):
+            continue
+        bound = envelope(r)[1]
+        growth, minj = r.get("maxEnergyIncrease"), r.get("minJ")
+        ok = bool(r.get("reachedEnd") and growth is not None
+                  and growth <= bound and minj is not None and minj > 0)
+        checks.record(
+            HERE, "%s (CFL limit %g)" % (r["label"], envelope(r)[0]),
+            "reached %s, dE/E0 max %s, min J %s" % (
+                "yes" if r.get("reachedEnd") else "no (%s)" % (
+                    r.get("error") or "t = %s" % r.get("timeReached")),
+                _f(growth, "%.2g"), _f(minj, "%.3f")),
+            "reaches %g s, dE/E0 max <= %g, min J > 0" % (
+                r.get("endTime", 0.3), bound), ok,
+            "inside the stated envelope (doc/method.md 8); dE/E0: the "
+            "largest growth of the monitor's total energy in one step")
+    if preset == "quick":
+        have = {(r["update"], r["scheme"]) for r in rows if inside(r)}
+        updates = sorted({u for u, _ in have})
+        schemes = sorted({t for _, t in have})
+        ok = (set(updates) == {u for u, _ in ENVELOPE}
+              and set(schemes) == {t for _, t in ENVELOPE})
+        checks.record(HERE, "quick preset covers every FUpdate and time "
+                      "scheme inside the envelope",
+                      " ".join(updates + schemes),
+                      "compatible constrained plain RK2 RK3", ok)
+    return checks.status(HERE) if checks.load(HERE) else 0
 
 
 def settings_of(grids):
@@ -430,6 +498,15 @@ def block(rows, out):
         "",
         table(rows),
     ]
+    outside = [r["label"] for r in rows if not inside(r)]
+    text += ["", "Every row inside the envelope (doc/method.md 8: "
+             "compatible RK2 CFL 0.6, 0.3 on n = 2, RK3 1.0, 0.8 on n = 2; "
+             "constrained 0.9 / 1.0, energy growth up to 1e-3 E0 a step; "
+             "plain 0.3 / 0.4) is a check in checks.json: it reaches the "
+             "end, dE/E0 max <= 0 (constrained: <= 1e-3) and min J > 0. "
+             + ("Outside it, reported and not asserted: %s."
+                % ", ".join(outside) if outside
+                else "Every row is inside it.")]
     n = notes(rows, b)
     if n:
         text += ["", "Runs that stopped or could not start:" if any(
@@ -533,6 +610,9 @@ def main(argv=None):
                     "" if info["wallTime"] is None
                     else " (%.1f s)" % info["wallTime"]), flush=True)
     rows = [analyse(s, args.end) for s in settings]
+    for r in rows:
+        r["endTime"] = args.end
+        r["insideEnvelope"] = inside(r)
     if args.no_run:
         # The build that made the runs, not the one in the PATH now
         labels = sorted({r["build"] for r in rows if r.get("build")})
@@ -552,8 +632,11 @@ def main(argv=None):
     text = block(rows, out)
     write_readme(text, os.path.join(HERE, "README.md"))
     print(text)
-    print("wrote results.json and README.md")
-    return 0
+    status = record_checks(rows, args.preset)
+    print("wrote results.json, README.md and checks.json (%d checks, %s)"
+          % (len(checks.load(HERE) or []), "all pass" if status == 0
+             else "some FAIL"))
+    return status
 
 
 if __name__ == "__main__":

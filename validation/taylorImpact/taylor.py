@@ -54,7 +54,10 @@ Writes results.json, results.md and taylor.png (when matplotlib is
 available).  --no-run re-analyses runs/ (wall times are stored there).
 Exit status 1 when acceptance line 1 of issue 10 fails on the finest
 mesh (ranges, convergence toward them, C <= 0.2 over all cells, energy
-growth below 1e-3 E_0).
+growth below 1e-3 E_0); on fewer or coarser meshes than the published
+(validation/Allrun -quick: --n 3 6), when one of quick_checks' checks
+fails (direction of convergence, the range widened by the mesh error,
+C, energy).  Either way the checks are in checks.json.
 """
 
 import argparse
@@ -424,34 +427,87 @@ def acceptance(out):
     return res
 
 
+#: The direction each quantity moves under refinement: the published
+#: meshes (n 3 6 9) and CalculiX C3D8R (4/4/34 -> 6/6/50: 21.473 -> 21.448
+#: mm, 6.774 -> 6.965 mm, 2.744 -> 3.051) agree: the length falls, the
+#: foot radius and the peak strain grow
+DIRECTION = {"length_mm": -1, "footRadius_mm": +1, "peakPlasticStrain": +1}
+#: Factor on the remaining mesh error estimated from the last two meshes
+BAND_FACTOR = 2.0
+
+
+def published(out):
+    """Whether the meshes are the published ones (three, finest n >= 9)."""
+    return len(out["meshes"]) >= 3 and int(list(out["meshes"])[-1]) >= 9
+
+
 def record_checks(out, res):
-    """The verdicts of acceptance() in checks.json (validation/Allrun);
-    on meshes coarser than the published ones (n 3 6 9) a fail says so."""
+    """The verdicts of acceptance() in checks.json (validation/Allrun) on
+    the published meshes; on fewer or coarser meshes (validation/Allrun
+    -quick: n 3 6) what such meshes can promise (quick_checks)."""
+    if not published(out):
+        quick_checks(out)
+        return
     n, fine = list(out["meshes"].items())[-1]
-    sizes = " ".join(out["meshes"])
-    small = ("" if len(out["meshes"]) >= 3 and int(n) >= 9 else
-             "meshes n %s, coarser or fewer than the published n 3 6 9"
-             % sizes)
     for key, (lo, hi) in LITERATURE.items():
         checks.record(HERE, "n%s %s" % (n, key), fine[key],
-                      "[%g, %g] (literature)" % (lo, hi), res[key],
-                      "" if res[key] else small)
+                      "[%g, %g] (literature)" % (lo, hi), res[key])
     for key, ok in res["converging"].items():
         c = out["convergence"][key]
         checks.record(HERE, "%s converging (differences shrink, finest "
                       "nearer the range)" % key,
                       " ".join("%.4g" % v for v in c["values"]),
-                      "shrinking, approaching", ok,
-                      "" if ok else "; ".join(m for m in (
-                          small, "needs three meshes"
-                          if len(c["values"]) < 3 else "") if m))
+                      "shrinking, approaching", ok)
     for f, ok in res["checkerFree"].items():
         checks.record(HERE, "n%s checker-board C of %s" % (n, f),
                       fine["checkerBoard"][f]["allCells"],
-                      "<= %g" % CHECKER_FREE, ok, "" if ok else small)
+                      "<= %g" % CHECKER_FREE, ok)
     checks.record(HERE, "n%s max energy growth / E0" % n,
                   fine["energy"]["maxGrowthRelative"], "< 1e-3",
                   res["energyGrowthBelow1e-3"])
+
+
+def quick_checks(out):
+    """On meshes coarser or fewer than the published ones: each quantity
+    moves in the direction of DIRECTION between the last two meshes, and
+    the finest lies within the literature range widened by BAND_FACTOR
+    times the remaining mesh error estimated from the last difference
+    d = v(n2) - v(n1) as first order, |d| / (n2/n1 - 1) (the order the
+    published meshes show for the length, 0.6-0.8, is lower still; the
+    range itself is asserted on the published meshes only); the
+    checker-board index of the finest mesh and the energy growth of every
+    mesh as on the published meshes."""
+    ns = [int(n) for n in out["meshes"]]
+    values = list(out["meshes"].values())
+    n, fine = ns[-1], values[-1]
+    sizes = "meshes n %s (the published study: n 3 6 9)" % " ".join(
+        map(str, ns))
+    for key, (lo, hi) in LITERATURE.items():
+        v = [m[key] for m in values]
+        if len(v) >= 2:
+            d = v[-1] - v[-2]
+            checks.record(
+                HERE, "%s moves with refinement as on the published "
+                "meshes and in CalculiX (n%d -> n%d)" % (key, ns[-2], n),
+                d, "%s 0" % ("<" if DIRECTION[key] < 0 else ">"),
+                d * DIRECTION[key] > 0, sizes)
+            widen = BAND_FACTOR * abs(d) / (float(n) / ns[-2] - 1.0)
+            checks.record(
+                HERE, "n%d %s within the literature range widened by "
+                "the mesh error" % (n, key), v[-1],
+                "[%.4g, %.4g] ([%g, %g] +- %.3g)" % (
+                    lo - widen, hi + widen, lo, hi, widen),
+                lo - widen <= v[-1] <= hi + widen,
+                "widening %g |d| / (n2/n1 - 1), d = %.3g; %s"
+                % (BAND_FACTOR, d, sizes))
+    for f in CHECKER_FIELDS:
+        c = fine["checkerBoard"][f]["allCells"]
+        checks.record(HERE, "n%d checker-board C of %s" % (n, f), c,
+                      "<= %g" % CHECKER_FREE, c <= CHECKER_FREE)
+    for m, r in zip(ns, values):
+        g = r["energy"]["maxGrowthRelative"]
+        checks.record(HERE, "n%d max energy growth / E0" % m, g, "< 1e-3",
+                      g < 1e-3)
 
 
 def main():
@@ -501,6 +557,12 @@ def main():
     ok = out["acceptance"]["pass"]
     print("%s (issue 10, acceptance 1): results.json, results.md"
           % ("PASS" if ok else "FAIL"))
+    if not published(out):
+        # Acceptance 1 is for the published meshes; these are judged by
+        # what they can promise (quick_checks)
+        ok = checks.status(HERE) == 0
+        print("%s (checks of meshes coarser than the published): "
+              "checks.json" % ("PASS" if ok else "FAIL"))
     return 0 if ok else 1
 
 
