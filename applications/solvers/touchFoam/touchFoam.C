@@ -147,34 +147,6 @@ static label reachedWriteIndex(const Time& runTime, const scalar dt)
 }
 
 
-//- On a restart, the dt of the last step taken (uniform/time), whatever
-//  adjustTimeStep says: OpenFOAM restores it only with adjustTimeStep and
-//  otherwise judges the end (run(): t < endTime - dt/2) and the write index
-//  with the controlDict's deltaT, so a run restarted within half a step of
-//  its end took one step more than the uninterrupted run (test killRestart)
-static void restoreLastStep(Time& runTime)
-{
-    IOdictionary timeDict
-    (
-        IOobject
-        (
-            "time",
-            runTime.timeName(),
-            "uniform",
-            runTime,
-            IOobject::READ_IF_PRESENT,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
-
-    scalar lastDt = 0;
-    if (timeDict.readIfPresent("deltaT", lastDt) && lastDt > 0)
-    {
-        runTime.setDeltaT(lastDt, false);
-    }
-}
-
 } // End namespace Foam
 
 
@@ -345,6 +317,18 @@ int main(int argc, char *argv[])
         {
             runTime.setTime(storedValue, runTime.timeIndex());
         }
+
+        // And with the dt of the last step taken, whatever adjustTimeStep
+        // says: OpenFOAM restores it only with adjustTimeStep and
+        // otherwise judges the end (run(): t < endTime - dt/2) and the
+        // write index with the controlDict's deltaT, so a run restarted
+        // within half a step of its end took one step more than the
+        // uninterrupted run (test killRestart)
+        scalar lastDt = 0;
+        if (timeDict.readIfPresent("deltaT", lastDt) && lastDt > 0)
+        {
+            runTime.setDeltaT(lastDt, false);
+        }
     }
 
     // An entry of controlDict neither OpenFOAM's Time nor touchFoam reads
@@ -456,11 +440,6 @@ int main(int argc, char *argv[])
     // counted from t = 0, whatever time the run starts from (a restart
     // takes the steps of the uninterrupted run, bit for bit); the write
     // index of the start from the last step's dt (uniform/time)
-    if (runTime.value() > 0)
-    {
-        restoreLastStep(runTime);
-    }
-
     const bool adjustableWrites =
         runTime.controlDict().get<word>("writeControl") == "adjustableRunTime";
     label writeIndex =
