@@ -43,8 +43,11 @@ NAME = "sphereImpact"
 N = 6
 
 #: |measured/closed form - 1| allowed: (peak force, contact time), about
-#: 3 times the errors measured at -n 6 on 2026-12-05 (FINDINGS.md)
-TOLERANCE = {"wall": (0.08, 0.03), "sphere": (0.9, 0.2)}
+#: 3 times the errors measured at -n 6 on 2026-12-05 (FINDINGS.md); the
+#: wall's contact time is held to the issue's 5 %: since the wall releases
+#: faces whose force would pull (e761893) the ball leaves earlier, -3.87 %
+#: (-0.76 % before, when the wall held it back with tension)
+TOLERANCE = {"wall": (0.08, 0.05), "sphere": (0.9, 0.2)}
 
 #: the total p_y drift allowed between the balls (measured 1.9e-3)
 MOMENTUM_DRIFT = 6e-3
