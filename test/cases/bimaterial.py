@@ -23,11 +23,13 @@ Extras: --with-meshing
     sum 1/2 rho_cell V U^2 to 1e-12 (each cell's own density), p_x stays
     its initial sum rho V U_x to 1e-10 of rho2 v0 V_bar, and the total
     energy never grows over the run (1e-12 relative slack);
-  - the right zone vonMisesPlastic (yieldStress 1e5 Pa, below the
-    transmitted wave's von Mises stress): epsilonP grows in it and stays
-    exactly 0 in the elastic zone, and 250 + 250 steps with a restart
-    from the written time end where 500 steps do, to 1e-12 (lm, F,
-    epsilonP, CpInv);
+  - both zones vonMisesPlastic (the right one's yieldStress 1e5 Pa below
+    the transmitted wave's von Mises stress, the left one's 1e6): each
+    zone's state is written under its name (epsilonP.right, CpInv.left,
+    ...), epsilonP.right grows in its zone, each zone's field stays
+    exactly 0 in the other, and 250 + 250 steps with a restart from the
+    written time end where 500 steps do, to 1e-12 (lm, F, both zones'
+    epsilonP and CpInv);
   - a decomposed run (2 ranks, the cut on the interface) equals the serial
     one to 1e-10 of the fields' largest values (sigma, U): the sums of
     the cut faces' points come in another order, and 800 steps carry that
@@ -218,14 +220,17 @@ def free_body(root, lines, failures):
 
 
 def plastic_restart(root, lines, failures):
-    """A zone with a law with state: its state stays in its zone, and a
-    restart from a written time continues as the uninterrupted run."""
+    """Two zones with a law with state (vonMisesPlastic both): each zone's
+    state fields carry its name (epsilonP.left, epsilonP.right), each stays
+    in its zone, and a restart from a written time continues as the
+    uninterrupted run."""
     base = make_case(root, "plastic")
-    write_properties(base, "materials\n{\n    left %s\n    right { model "
-                     "vonMisesPlastic; rho %.17g; E %.17g; nu %.17g; "
-                     "vonMisesPlasticCoeffs { yieldStress 1e5; "
-                     "hardeningModulus 1e8; } }\n}\n"
-                     % (law(RHO1), RHO2, E, NU))
+    plastic = ("{ model vonMisesPlastic; rho %.17g; E %.17g; nu %.17g; "
+               "vonMisesPlasticCoeffs { yieldStress %g; "
+               "hardeningModulus 1e8; } }")
+    write_properties(base, "materials\n{\n    left %s\n    right %s\n}\n"
+                     % (plastic % (RHO1, E, NU, 1e6),
+                        plastic % (RHO2, E, NU, 1e5)))
     write_velocity(base, "lm", "uniform (0 0 0)",
                    "{ type prescribedVelocity; velocity uniform (%g 0 0); "
                    "value uniform (0 0 0); }" % V0,
@@ -246,22 +251,39 @@ def plastic_restart(root, lines, failures):
         runs[label] = run.latest_time_dir(case)
     x = PolyMesh(base).cell_centres[:, 0]
     n = len(x)
-    eps = testing.read_internal(runs["whole"], "epsilonP", n)
     left = x < 0.5 * SIZE[0]
+    eps = {zone: testing.read_internal(runs["whole"], "epsilonP." + zone, n)
+           for zone in ("left", "right")}
+    for name in ("epsilonP", "CpInv"):
+        if os.path.exists(os.path.join(runs["whole"], name)):
+            failures.append("plastic zones: a field '%s' without a zone's "
+                            "name was written" % name)
     worst = 0.0
-    for field in ("lm", "F", "epsilonP", "CpInv"):
+    for field in ("lm", "F", "epsilonP.left", "epsilonP.right",
+                  "CpInv.left", "CpInv.right"):
         a = foamfile.read_field(os.path.join(runs["whole"], field))
         b = foamfile.read_field(os.path.join(runs["restarted"], field))
         worst = max(worst, testing.relative_max_difference(
             b.internal(n), a.internal(n)))
-    lines.append("plastic right zone: epsilonP max %.2e in it, %.1e in the "
-                 "elastic zone; restart after 250 of 500 steps: %.1e from "
-                 "the whole run (%s)" % (eps[~left].max(),
-                                         np.abs(eps[left]).max(), worst,
-                                         os.path.basename(runs["whole"])))
-    if not eps[~left].max() > 0 or np.abs(eps[left]).max() != 0:
-        failures.append("plastic zone: epsilonP %.2e in it, %.2e outside"
-                        % (eps[~left].max(), np.abs(eps[left]).max()))
+    lines.append("plastic zones: epsilonP.right max %.2e in its zone, %.1e "
+                 "in the other; epsilonP.left (yield 10x higher) max %.2e in "
+                 "its zone, %.1e in the other; restart after 250 of 500 "
+                 "steps: %.1e from the whole run (%s)"
+                 % (eps["right"][~left].max(), np.abs(eps["right"][left]).max(),
+                    eps["left"][left].max(), np.abs(eps["left"][~left]).max(),
+                    worst, os.path.basename(runs["whole"])))
+    if not eps["right"][~left].max() > 0 \
+            or np.abs(eps["right"][left]).max() != 0 \
+            or np.abs(eps["left"][~left]).max() != 0:
+        failures.append("plastic zones: epsilonP.right %.2e in it, %.2e "
+                        "outside; epsilonP.left %.2e outside its zone"
+                        % (eps["right"][~left].max(),
+                           np.abs(eps["right"][left]).max(),
+                           np.abs(eps["left"][~left]).max()))
+    if eps["left"][left].max() >= eps["right"][~left].max():
+        failures.append("plastic zones: the left zone (yield 1e6) flowed "
+                        "%.2e, not less than the right (yield 1e5) %.2e"
+                        % (eps["left"][left].max(), eps["right"][~left].max()))
     if os.path.basename(runs["whole"]) != \
             os.path.basename(runs["restarted"]) or worst > 1e-12:
         failures.append("plastic restart: %.2e from the whole run" % worst)

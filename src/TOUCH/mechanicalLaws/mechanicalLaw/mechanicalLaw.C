@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mechanicalLaw.H"
+#include "zoned.H"
 #include "fvMesh.H"
 #include "declaredEntry.H"
 
@@ -65,6 +66,24 @@ static dictionary asMechanicalProperties
     return named;
 }
 
+
+//- The cellZone whose material dict is (its keyword inside 'materials',
+//  zoned), or empty for the law of the whole mesh
+static word zoneOf(const dictionary& dict)
+{
+    const dictionary& parent = dict.parent();
+
+    if
+    (
+        &parent != &dictionary::null
+     && parent.dictName() == mechanicalLaws::zoned::materialsKeyword()
+    )
+    {
+        return dict.dictName();
+    }
+    return word::null;
+}
+
 } // End namespace Foam
 
 
@@ -100,7 +119,8 @@ Foam::mechanicalLaw::mechanicalLaw
     cellMaterial_(),
     materialRho_(1, rho_),
     materialUp_(1, Up_),
-    materialUs_(1, Us_)
+    materialUs_(1, Us_),
+    zoneName_(zoneOf(dict))
 {}
 
 
@@ -133,8 +153,17 @@ Foam::mechanicalLaw::mechanicalLaw
     lambda_(E_*nu_/((1 + nu_)*(1 - 2*nu_))),
     kappa_(lambda_ + 2*mu_/3),
     Up_(Foam::sqrt((lambda_ + 2*mu_)/rho_)),
-    Us_(Foam::sqrt(mu_/rho_))
+    Us_(Foam::sqrt(mu_/rho_)),
+    zoneName_()
 {}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+Foam::word Foam::mechanicalLaw::stateFieldName(const word& name) const
+{
+    return zoneName_.empty() ? name : word(name + '.' + zoneName_);
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

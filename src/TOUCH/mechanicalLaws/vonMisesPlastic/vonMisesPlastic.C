@@ -136,7 +136,7 @@ Foam::mechanicalLaws::vonMisesPlastic::vonMisesPlastic
     (
         IOobject
         (
-            "CpInv",
+            stateFieldName("CpInv"),
             mesh.time().timeName(),
             mesh,
             IOobject::READ_IF_PRESENT,
@@ -150,7 +150,7 @@ Foam::mechanicalLaws::vonMisesPlastic::vonMisesPlastic
     (
         IOobject
         (
-            "epsilonP",
+            stateFieldName("epsilonP"),
             mesh.time().timeName(),
             mesh,
             IOobject::READ_IF_PRESENT,

@@ -127,8 +127,6 @@ Foam::mechanicalLaws::zoned::zoned
     labelList count(mesh.nCells(), Zero);
     cellMaterial_.setSize(mesh.nCells(), -1);
 
-    label nWithState = 0;
-
     for (const entry& e : materials)
     {
         if (!e.isDict())
@@ -174,10 +172,6 @@ Foam::mechanicalLaws::zoned::zoned
             cellMaterial_[celli] = m;
         }
 
-        if (laws_[m].hasState())
-        {
-            ++nWithState;
-        }
     }
 
     if (laws_.empty())
@@ -221,14 +215,6 @@ Foam::mechanicalLaws::zoned::zoned
             << nl << "The listed zones: " << zoneNames_
             << nl << "The mesh's cellZones: " << zones.names()
             << exit(FatalIOError);
-    }
-
-    if (nWithState > 1)
-    {
-        FatalIOErrorInFunction(materials)
-            << "Entry '" << materialsEntry.name() << "': " << nWithState
-            << " zones use a law with state; their state fields have fixed"
-            << " names, so at most one zone may" << exit(FatalIOError);
     }
 
     const label nMat = laws_.size();
