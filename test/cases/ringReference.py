@@ -5,7 +5,7 @@
         [--touch entry=value ...] [--reference-scale QUANTITY=FACTOR ...]
 
 tutorials/ringImpact (the seed paper's ring, plane strain) at its setting
-on -n 96 (384 cells, the tutorial's default) and -n 192 (1,536 cells), to
+on -n 96 (384 cells, the tutorial's default) and -n 192 (1,728 cells), to
 0.045 s (the contact lasts from 7 to about 31 ms).  Measured at the first
 step after the last one with a face in contact (the ring free again; the
 solidMonitor's rows): the contact duration, the rebound velocity
@@ -17,7 +17,7 @@ at the end of contact is exact and what the scheme loses must vanish
 with the mesh; the contact duration and the rebound velocity (part of
 the energy stays in the ring's vibration) have no closed form, and
 their references are the converged values of validation/ringImpact:
-the same quantities on -n 96, 192 and 384 (384, 1,536 and 6,528 cells)
+the same quantities on -n 96, 192 and 384 (384, 1,728 and 6,528 cells)
 to 0.045 s, extrapolated (FINDINGS.md 5, with its command and date):
 
   quantity        -n 96    -n 192   -n 384   reference
@@ -38,7 +38,7 @@ uncertainty); the errors of v_y / v0 and E / E0 fall from -n 96 to -n 192
 grows).
 Perturbations that make it fail (test/perturbations.py, group 'ring on
 the rigid wall'): --touch reconstruction=firstOrder, --reference-scale
-contactDuration=1.03.  About 35 s of CPU (the ring on 384 and 1,536
+contactDuration=1.03.  About 35 s of CPU (the ring on 384 and 1,728
 cells to 0.045 s).
 Work folders: test/runs/ringReference/.
 """
