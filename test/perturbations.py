@@ -8,7 +8,8 @@ code it checks is perturbed.
 A test that passes whatever the code does proves nothing.  For each group
 of tests against an independent reference (issue: the twisting column's
 converged twist, the swinging cube's closed form over a period, the bar on
-the rigid wall against the 1D closed form, the temporal order, the stable
+the rigid wall against the 1D closed form, the ring's end of contact
+against its mesh-converged value, the temporal order, the stable
 step's closed form, the Riemann solver's closed-form fluxes, the laws'
 closed-form stresses, the strain energy recomputed from F) this script
 runs the group's test once with a perturbation and asserts that it fails:
@@ -112,6 +113,14 @@ PERTURBATIONS = [
      ("src/TOUCH/mechanicalLaws/neoHookean/neoHookean.C",
       "+ kappa_*(J - 1)*H;",
       "+ 1.01*kappa_*(J - 1)*H;")),
+    ("ringReference", "ring on the rigid wall", "reference",
+     "converged contact duration 3 % longer",
+     case_test("ringReference", "--reference-scale", "contactDuration=1.03"),
+     None),
+    ("ringFirstOrder", "ring on the rigid wall", "setting",
+     "reconstruction firstOrder",
+     case_test("ringReference", "--touch", "reconstruction=firstOrder"),
+     None),
     ("strainEnergyMu", "strain energy from F", "reference",
      "mu 0.1 % high in the energy formula",
      case_test("strainEnergyFromF", "--mu-scale", "1.001"), None),
