@@ -10,7 +10,7 @@
                  [--repeat R]
 
 Runs, one at a time and on one thread each (OMP_NUM_THREADS=1 for ccx),
-CalculiX (decks from the peer's generators in $CALCULIX_PEER,
+CalculiX (decks written by decks.py,
 explicit, its own increment) and touchFoam on the same structured hex
 meshes, in runs/<case>/n<n>/<code>/, and reports for each run the wall time
 of the solver process (and its CPU time), the steps or increments, and the
@@ -40,8 +40,7 @@ cube    tutorials/swingingCube on N^3 cells or C3D8/C3D8R elements, to
         t = 0.004 s, against the closed-form solution (analytic.py):
           e_v   = sqrt(sum_i w_i |v_i - v(X_i)|^2), the velocity vector:
                   touchFoam cell centres with cell volumes, CalculiX nodes
-                  with trapezoidal weights (the peer's post_cube.py, which
-                  is run as a check);
+                  with trapezoidal weights;
           e_vx  = the same for v_x alone (validation/swingingCube's
                   number; e_v = sqrt(3) e_vx by the cube's symmetry);
           e_Pxx = sqrt(sum_e V_e (P_xx,e - P_xx(X_e))^2): touchFoam's cell
@@ -90,7 +89,7 @@ import calculixChecks  # noqa: E402
 import ccx  # noqa: E402
 import report  # noqa: E402
 from cubeErrors import (CUBE_END, check_cube_material,  # noqa: E402
-                        ccx_cube_errors, peer_cube_ev, touch_cube_errors)
+                        ccx_cube_errors, touch_cube_errors)
 
 COLUMN_END = 0.1
 COLUMN_NU = 0.45
@@ -303,9 +302,9 @@ def ccx_top(folder, job, t):
 def check_column_material():
     mat = cases.material(run.tutorial_dir("twistingColumn"))
     for key in ("E", "rho"):
-        if not math.isclose(mat[key], ccx.COLUMN_PEER[key], rel_tol=1e-12):
+        if not math.isclose(mat[key], ccx.COLUMN_DECK[key], rel_tol=1e-12):
             raise ValueError("twistingColumn %s = %g, the CalculiX deck has "
-                             "%g" % (key, mat[key], ccx.COLUMN_PEER[key]))
+                             "%g" % (key, mat[key], ccx.COLUMN_DECK[key]))
 
 
 def reference_twist(args):
@@ -417,7 +416,6 @@ def analyse_cube(args):
             folder = run_dir("cube", n, "ccx-" + element)
             info = _load(folder)
             e = ccx_cube_errors(folder, info["job"], n, sol)
-            e["peerEv"] = peer_cube_ev(folder, info["job"], n)
             rows.append(_cube_row("CalculiX", element, info, e))
         for setting in args.cube_settings:
             folder = run_dir("cube", n, "touchFoam-" + setting)
@@ -542,7 +540,6 @@ def main():
         if not args.no_run:
             run.check_openfoam()
             ccx.check_ccx()
-            ccx.peer_dir()
             run_all(args)
         results = {"date": datetime.date.today().isoformat(),
                    "command": " ".join(sys.argv),
