@@ -149,7 +149,7 @@ def read_inp(path):
     return nodes, elements, other
 
 
-_DAT_HEADER = re.compile(r"^\s*(\S.*?)\s+for set\s+(\S+)\s+and time\s+(\S+)")
+_DAT_HEADER = re.compile(r"^\s*(\S.*?)\s*for set\s+(\S+)\s+and time\s+(\S+)")
 
 
 def read_dat(path):
