@@ -19,11 +19,12 @@ ccx N EL      CalculiX on the same grid (validation/calculix/decks.py),
               (valid while errors are below 180 deg)
 analyse       each code's (and element's) finest three meshes in the
               ratio 2: observed order p = log2((T1 - T2) / (T2 - T3)),
-              Richardson T* = T3 + (T3 - T2) / (2^p - 1); with two meshes
-              only, the order of the other element is borrowed.  The band
-              is the span of the extrapolations (and of any
-              extrapolation's own uncertainty, |T* - T3| / 2 when its
-              order is borrowed); writes reference.json.
+              Richardson T* = T3 + (T3 - T2) / (2^p - 1), the finest
+              triplet's; with two meshes only, the order of the other
+              element is borrowed.  The band is the span of the codes'
+              extrapolations, each widened by its uncertainty (the spread
+              of its triplets' extrapolations; half the shift |T* - T3|
+              when its order is borrowed); writes reference.json.
 
 The twist is the mean rotation about +Y of the top-face points at least
 0.25 m from the axis (both codes the same points and formula).  Runs go
@@ -121,14 +122,33 @@ def run_ccx(n, element):
     save(folder, info)
 
 
+def triplets(values):
+    """Every (n, 2n, 4n) of the measured meshes, finest last, with its
+    observed order p = log2((T1 - T2) / (T2 - T3)) and Richardson
+    extrapolation T3 + (T3 - T2) / (2^p - 1) (None where the differences
+    change sign)."""
+    out = []
+    for n in sorted(values):
+        if 2 * n in values and 4 * n in values:
+            t1, t2, t3 = values[n], values[2 * n], values[4 * n]
+            if (t1 - t2) * (t2 - t3) > 0:
+                p = math.log2((t1 - t2) / (t2 - t3))
+                out.append((n, p, t3 + (t3 - t2) / (2 ** p - 1)))
+            else:
+                out.append((n, None, None))
+    return out
+
+
 def richardson(values, borrowed_order=None):
-    """(order, extrapolation, its half-uncertainty) from {n: twist}."""
+    """(order, extrapolation, its uncertainty, own order?) from {n:
+    twist}: the finest triplet in the ratio 2 (uncertainty: the largest
+    difference from the other triplets' extrapolations), or, with only a
+    pair, the borrowed order (uncertainty: half the shift it makes)."""
+    found = [t for t in triplets(values) if t[1] is not None]
+    if found:
+        spread = max(abs(t[2] - found[-1][2]) for t in found)
+        return found[-1][1], found[-1][2], spread, True
     ns = sorted(values)
-    if len(ns) >= 3:
-        t1, t2, t3 = (values[k] for k in ns[-3:])
-        if ns[-1] == 2 * ns[-2] == 4 * ns[-3] and (t1 - t2) * (t2 - t3) > 0:
-            p = math.log2((t1 - t2) / (t2 - t3))
-            return p, t3 + (t3 - t2) / (2 ** p - 1), 0.0, True
     if len(ns) >= 2 and borrowed_order and ns[-1] == 2 * ns[-2]:
         t2, t3 = values[ns[-2]], values[ns[-1]]
         shift = (t3 - t2) / (2 ** borrowed_order - 1)
@@ -151,6 +171,7 @@ def analyse():
         p, ext, half, own = richardson(twists)
         orders[code] = p
         result["codes"][code] = {"twist": twists, "order": p,
+                                 "triplets": triplets(twists),
                                  "extrapolation": ext, "uncertainty": half,
                                  "ownOrder": own,
                                  "wall": {n: r["wall"]
@@ -180,6 +201,10 @@ def analyse():
             if e["order"] else "-",
             "%.2f +- %.2f" % (e["extrapolation"], e["uncertainty"])
             if e["extrapolation"] else "-"))
+        for n, p, t in e["triplets"]:
+            print("    %d / %d / %d: order %s, extrapolated %s" % (
+                n, 2 * n, 4 * n, "%.2f" % p if p else "-",
+                "%.2f" % t if t else "-"))
     if ends:
         print("band %.2f - %.2f, middle %.2f" % (low, high,
                                                  result["reference"]))
