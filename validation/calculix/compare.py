@@ -5,7 +5,7 @@
                  [--elements C3D8R C3D8] [--cube-elements C3D8 C3D8R]
                  [--settings default limitedLinear-RK2-CFL0.3 ...]
                  [--cube-settings default linear-RK2-CFL0.6 ...]
-                 [--reference 330.7] [--band 328.9 332.6]
+                 [--reference T] [--band LOW HIGH]
                  [--reference-size 24] [--build-label LABEL] [--no-run]
                  [--repeat R]
 
@@ -22,8 +22,10 @@ column  tutorials/twistingColumn, n x 6n x n cells or C3D8R/C3D8 elements,
         rotation about +Y (analytic.twist_angle), the same points and
         formula for both codes.  Error = |twist(0.1 s) - reference|.  The
         codes converge from opposite sides, so their finest values bracket
-        the converged twist: the band is that bracket (--band; default
-        BAND, from 24x144x24), the reference its middle (--reference);
+        the converged twist.  The defaults of --reference and --band are
+        the converged twist and its band of
+        validation/twistingColumn/reference.json (both codes' Richardson
+        extrapolations);
         --reference-size 24 makes the two runs (under nice, kept in runs/)
         and takes both from them.  Every verdict is also checked over the
         whole band.  Both codes write only at 0.1 s,
@@ -95,10 +97,14 @@ COLUMN_END = 0.1
 COLUMN_NU = 0.45
 TOP = 6.0
 RMIN = 0.25              # postprocess.column_twist's default
-#: reference twist at 0.1 s and its band [deg] when --reference-size is not
-#: given: the bracket of the 24x144x24 runs (README.md, finding 2)
-REFERENCE = 330.7
-BAND = (328.9, 332.6)
+#: the converged twist at 0.1 s and its band [deg] when --reference-size
+#: is not given: both codes' Richardson extrapolations
+#: (validation/twistingColumn/reference.py, FINDINGS.md there)
+REFERENCE_FILE = os.path.join(HERE, "..", "twistingColumn", "reference.json")
+with open(REFERENCE_FILE) as _f:
+    _converged = json.load(_f)
+REFERENCE = round(_converged["reference"], 2)
+BAND = tuple(round(b, 2) for b in _converged["band"])
 REFERENCE_SETTING = "default"
 REFERENCE_ELEMENT = "C3D8R"
 NICE = ("nice", "-n", "19")
@@ -317,9 +323,9 @@ def reference_twist(args):
     """
     if not args.reference_size:
         return args.reference, list(args.band), {
-            "source": "--reference and --band; the defaults are the bracket "
-            "of CalculiX %s and touchFoam %s on 24x144x24, README.md"
-            % (REFERENCE_ELEMENT, REFERENCE_SETTING)}
+            "source": "--reference and --band; the defaults are those of "
+            "validation/twistingColumn/reference.json, both codes' "
+            "Richardson extrapolations"}
     n = args.reference_size
     twists = {}
     for code in ("ccx-" + REFERENCE_ELEMENT,

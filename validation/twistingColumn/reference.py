@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The twisting column's converged twist at 0.1 s, from both codes.
 
-    /usr/bin/python3 validation/twistingColumn/reference.py touchFoam N
+    /usr/bin/python3 validation/twistingColumn/reference.py touchFoam N [RANKS]
     /usr/bin/python3 validation/twistingColumn/reference.py ccx N ELEMENT
     /usr/bin/python3 validation/twistingColumn/reference.py analyse
 
@@ -81,11 +81,20 @@ def save(folder, info):
           % (folder, info["twist"], info["wall"], info["cpu"]), flush=True)
 
 
-def run_touch(n):
+def run_touch(n, ranks=1):
     folder = os.path.join(RUNS, "touchFoam_n%d" % n)
     cases.prepare("twistingColumn", folder, n=n,
                   control={"endTime": T_END, "writeInterval": 0.01})
-    info = timed(["touchFoam"], folder, "touchFoam")
+    if ranks > 1:
+        run.foam_set(folder, "system/decomposeParDict", "numberOfSubdomains",
+                     ranks)
+        run.run(["decomposePar", "-force"], folder)
+        info = timed(run.mpirun(ranks, ["touchFoam"]), folder,
+                     "touchFoam")
+        run.run(["reconstructPar"], folder)
+    else:
+        info = timed(["touchFoam"], folder, "touchFoam")
+    info["ranks"] = ranks
     info["twist"] = math.degrees(postprocess.column_twist(folder)[-1][1])
     energy = monitor.read_monitor(folder)["totalEnergy"]
     info["energyKept"] = energy[-1] / energy[0]
@@ -212,8 +221,9 @@ def analyse():
 
 def main():
     what = sys.argv[1] if len(sys.argv) > 1 else ""
-    if what == "touchFoam" and len(sys.argv) == 3:
-        run_touch(int(sys.argv[2]))
+    if what == "touchFoam" and len(sys.argv) in (3, 4):
+        run_touch(int(sys.argv[2]), int(sys.argv[3]) if len(sys.argv) == 4
+                  else 1)
     elif what == "ccx" and len(sys.argv) == 4:
         run_ccx(int(sys.argv[2]), sys.argv[3])
     elif what == "analyse":
