@@ -11,7 +11,8 @@ and line for
 
   - a pointer outside the repository: the folder beside it that holds
     the planning documents and the peers ('../' + SIBLING, SIBLING +
-    '/docs', '/peers', '/seeds', '/hooks'), or the names of those documents
+    '/docs', '/peers', '/seeds', '/hooks'), an environment variable naming
+    such a folder (OUTSIDE_FOLDER_VARIABLE), or the names of those documents
     (BENCHMARKS, ENVIRONMENT, METHOD, CONTACT, STYLE, each with '.md'): the
     project's own documents are in doc/ (method.md, benchmarks.md,
     environment.md, userGuide.md);
@@ -45,9 +46,12 @@ SELF = os.path.relpath(os.path.abspath(__file__), TOP)
 SIBLING = "sha" + "red"
 DOCUMENTS = ("BENCHMARKS", "ENVIRONMENT", "METHOD", "CONTACT", "STYLE")
 SITTING = "ses" + "sion"
+#: the variable that named a folder of deck generators outside the
+#: repository (validation/calculix/decks.py writes the decks now)
+OUTSIDE_FOLDER_VARIABLE = "CALCULIX" + "_PEER"
 OUTSIDE = re.compile(
-    r"\.\./%s\b|\b%s/(docs|peers|seeds|hooks)\b|\b(%s)\.md\b"
-    % (SIBLING, SIBLING, "|".join(DOCUMENTS)))
+    r"\.\./%s\b|\b%s/(docs|peers|seeds|hooks)\b|\b(%s)\.md\b|\b%s\b"
+    % (SIBLING, SIBLING, "|".join(DOCUMENTS), OUTSIDE_FOLDER_VARIABLE))
 PERIOD = re.compile(
     r"\b%ss?\b|\bworking[- ]periods?\b|\bperiod \d+\b"
     r"|\btrial \d+ of\b" % SITTING, re.IGNORECASE)
@@ -117,14 +121,15 @@ def body():
 
     # Control: one of each kind, on known lines, must be found
     control = ("# A study\n"
-               "See ../%s/docs/%s.md section 3.\n"
+               "See ../%s/docs/%s.md section 3 and $%s.\n"
                "Measured in the fifth %s.\n"
                "Plain text about a vibration period of 0.4 s.\n"
                "[peer](../../../outside/README.md) [missing](doc/none.md)\n"
-               % (SIBLING, DOCUMENTS[0], SITTING))
+               % (SIBLING, DOCUMENTS[0], OUTSIDE_FOLDER_VARIABLE, SITTING))
     hits = [(w, what.split(" (")[0]) for w, what, _ in
             scan("validation/control.md", control)]
     expect = [("validation/control.md:2", "points outside the repository"),
+              ("validation/control.md:2", "points outside the repository"),
               ("validation/control.md:2", "points outside the repository"),
               ("validation/control.md:3",
                "numbers history by working period"),

@@ -39,7 +39,7 @@ TWIST_ERROR = {("touchFoam", "default"): (11.3, 1.5),
                ("CalculiX", "C3D8R"): (11.2, 1.9)}
 ERROR_FACTOR = 1.5
 MIN_ORDER = 1.8
-CUBE_PEER = "C3D8"
+CUBE_ELEMENT = "C3D8"
 
 
 def _run(mesh, code, variant):
@@ -85,18 +85,18 @@ def cube(res):
     for n in sizes:
         mesh = res["meshes"][str(n)]
         tf = _run(mesh, "touchFoam", "default")
-        cx = _run(mesh, "CalculiX", CUBE_PEER)
+        cx = _run(mesh, "CalculiX", CUBE_ELEMENT)
         if tf and cx:
             checks.record(
                 HERE, "cube %d^3: e_Pxx touchFoam / CalculiX %s"
-                % (n, CUBE_PEER), tf["ePxx"] / cx["ePxx"],
+                % (n, CUBE_ELEMENT), tf["ePxx"] / cx["ePxx"],
                 "<= 1 (%.3g / %.3g Pa)" % (tf["ePxx"], cx["ePxx"]),
                 tf["ePxx"] <= cx["ePxx"],
                 "errors against the closed form, same mesh; e_v is "
                 "reported (touchFoam's is larger on coarse meshes)")
     for a, b in zip(sizes, sizes[1:]):
         for code, variant in (("touchFoam", "default"),
-                              ("CalculiX", CUBE_PEER)):
+                              ("CalculiX", CUBE_ELEMENT)):
             ra = _run(res["meshes"][str(a)], code, variant)
             rb = _run(res["meshes"][str(b)], code, variant)
             if not (ra and rb):

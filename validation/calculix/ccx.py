@@ -1,17 +1,17 @@
 """CalculiX side of the comparison: decks, timed runs, output readers.
 
-The decks come from the CalculiX peer's deck generators, a folder outside
-this project named by $CALCULIX_PEER, called as programs; everything read
-back from CalculiX's files is read here:
+The decks are written by decks.py (this folder); everything read back from
+CalculiX's files is read here:
 
-    peer_dir         the generators' folder, checked
-    column_deck      gen_column.py: n x 6n x n twisting column to t_end
-    cube_deck        gen_cube.py: N^3 swinging cube to 0.004 s, plus an
-                     element print of the stresses at the last increment
+    column_deck      the n x 6n x n twisting column to t_end
+    cube_deck        the N^3 swinging cube to 0.004 s, with an element
+                     print of the stresses at the last increment
     version          'CalculiX 2.20', from ccx -v
     timed            run a command, return wall and CPU time of the process
     read_inp         node coordinates and element connectivity of a deck
     read_dat         the node and element prints of a .dat file
+    read_frd         the node coordinates and the last nodal block of each
+                     named result of a .frd file
     increments       increments CalculiX took (the .frd step headers)
     selected_dt      the increment CalculiX chose ('SELECTED time increment')
 """
@@ -25,29 +25,17 @@ import time
 
 from touchfoam import run
 
+import decks
+
 PYTHON = run.PYTHON
 #: one thread: OpenMP and CalculiX's own per-task counts
 ONE_THREAD = {"OMP_NUM_THREADS": "1", "CCX_NPROC_STIFFNESS": "1",
               "CCX_NPROC_RESULTS": "1", "CCX_NPROC_EQUATION_SOLVER": "1",
               "MKL_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1"}
-#: material and motion the peer's generators write (their docstrings);
-#: compared with the tutorials' by the driver
-COLUMN_PEER = {"E": 17e6, "rho": 1100.0, "Omega": 105.0, "L": 6.0}
-CUBE_PEER = {"E": 1.7e7, "nu": 0.3, "rho": 1100.0, "U0": 5e-4}
-
-
-def peer_dir():
-    """The folder of the peer's deck generators, $CALCULIX_PEER."""
-    path = os.environ.get("CALCULIX_PEER", "")
-    if not path:
-        raise run.RunError("set CALCULIX_PEER to the folder of the CalculiX"
-                           " deck generators (gen_column.py, gen_cube.py)")
-    path = os.path.abspath(path)
-    for name in ("gen_column.py", "gen_cube.py"):
-        if not os.path.isfile(os.path.join(path, name)):
-            raise run.RunError("CalculiX deck generator %s not found in %s "
-                               "($CALCULIX_PEER)" % (name, path))
-    return path
+#: material and motion the decks are written with; compared with the
+#: tutorials' by the driver
+COLUMN_DECK = decks.COLUMN
+CUBE_DECK = decks.CUBE
 
 
 def check_ccx():
@@ -69,42 +57,25 @@ def version():
     return "CalculiX (version unknown)"
 
 
-def _generate(script, args, folder, env=None):
-    os.makedirs(folder, exist_ok=True)
-    cmd = [PYTHON, os.path.join(peer_dir(), script)] + [str(a) for a in args]
-    run.run(cmd, folder, "generate", env=env)
-
-
 def column_deck(folder, job, n, element, nu, t_end):
     """Deck of the n x 6n x n column, one explicit step to t_end.
 
     One step: the increment is CalculiX's initial estimate for the whole
-    run (the peer's run_A1.sh, which ends at 0.3 s; t_end = 0.1 here).
-    DTOUT = t_end asks for output only at the end: the generator turns it
-    into an output frequency in increments, and the last increment of a
-    step is always written (peer README, note 3).
+    run; the top face's displacements are printed at the step's last
+    increment only (decks.py).
     """
-    _generate("gen_column.py", [job, n, 6 * n, n, element, nu, t_end,
-                                "explicit", "-", t_end], folder,
-              env={"DTOUT": repr(t_end)})
-    return os.path.join(folder, job + ".inp")
+    os.makedirs(folder, exist_ok=True)
+    return decks.column_deck(os.path.join(folder, job + ".inp"), n, element,
+                             nu, t_end)
 
 
 def cube_deck(folder, job, n, element, t_end=0.004):
     """Deck of the N^3 cube (explicit, CalculiX's increment), with the
-    integration-point stresses printed at the last increment."""
-    _generate("gen_cube.py", [job, n, element, "explicit", "-", t_end],
-              folder)
-    path = os.path.join(folder, job + ".inp")
-    with open(path) as f:
-        text = f.read()
-    if text.count("*END STEP") != 1:
-        raise ValueError("%s: expected one *END STEP" % path)
-    text = text.replace("*END STEP", "*EL PRINT, ELSET=EALL, "
-                        "FREQUENCY=100000000\nS\n*END STEP")
-    with open(path, "w") as f:
-        f.write(text)
-    return path
+    nodes' U and V and the integration-point stresses printed at the last
+    increment."""
+    os.makedirs(folder, exist_ok=True)
+    return decks.cube_deck(os.path.join(folder, job + ".inp"), n, element,
+                           t_end)
 
 
 def timed(cmd, case, name, env=None):
@@ -178,7 +149,7 @@ def read_inp(path):
     return nodes, elements, other
 
 
-_DAT_HEADER = re.compile(r"^\s*(\S.*?)\s+for set\s+(\S+)\s+and time\s+(\S+)")
+_DAT_HEADER = re.compile(r"^\s*(\S.*?)\s*for set\s+(\S+)\s+and time\s+(\S+)")
 
 
 def read_dat(path):
@@ -231,3 +202,28 @@ def selected_dt(log):
     with open(log, errors="replace") as f:
         return [float(x) for x in re.findall(
             r"SELECTED time increment[^:]*:\s*([0-9.eE+-]+)", f.read())]
+
+
+def read_frd(path, names):
+    """(node coordinates {id: (x, y, z)}, {name: {id: [values]}}) of a .frd
+    file: the geometry block ('    2C') and, for each result in names
+    ('DISP', 'PE', ...), its last nodal block (' -4  NAME' header, ' -1'
+    records: id in columns 4-13, then 12-character values)."""
+    nodes, last = {}, {}
+    current = None
+    with open(path, errors="replace") as f:
+        for line in f:
+            if line.startswith("    2C"):
+                current = nodes
+            elif line.startswith(" -4"):
+                name = line.split()[1]
+                current = {} if name in names else None
+                if current is not None:
+                    last[name] = current
+            elif line.startswith(" -1") and current is not None:
+                values = [float(line[c:c + 12])
+                          for c in range(13, len(line.rstrip()) - 11, 12)]
+                current[int(line[3:13])] = values
+            elif line.startswith(" -3"):
+                current = None
+    return {i: tuple(v[:3]) for i, v in nodes.items()}, last

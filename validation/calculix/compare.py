@@ -5,12 +5,12 @@
                  [--elements C3D8R C3D8] [--cube-elements C3D8 C3D8R]
                  [--settings default limitedLinear-RK2-CFL0.3 ...]
                  [--cube-settings default linear-RK2-CFL0.6 ...]
-                 [--reference 330.7] [--band 328.9 332.6]
+                 [--reference T] [--band LOW HIGH]
                  [--reference-size 24] [--build-label LABEL] [--no-run]
                  [--repeat R]
 
 Runs, one at a time and on one thread each (OMP_NUM_THREADS=1 for ccx),
-CalculiX (decks from the peer's generators in $CALCULIX_PEER,
+CalculiX (decks written by decks.py,
 explicit, its own increment) and touchFoam on the same structured hex
 meshes, in runs/<case>/n<n>/<code>/, and reports for each run the wall time
 of the solver process (and its CPU time), the steps or increments, and the
@@ -22,8 +22,10 @@ column  tutorials/twistingColumn, n x 6n x n cells or C3D8R/C3D8 elements,
         rotation about +Y (analytic.twist_angle), the same points and
         formula for both codes.  Error = |twist(0.1 s) - reference|.  The
         codes converge from opposite sides, so their finest values bracket
-        the converged twist: the band is that bracket (--band; default
-        BAND, from 24x144x24), the reference its middle (--reference);
+        the converged twist.  The defaults of --reference and --band are
+        the converged twist and its band of
+        validation/twistingColumn/reference.json (both codes' Richardson
+        extrapolations);
         --reference-size 24 makes the two runs (under nice, kept in runs/)
         and takes both from them.  Every verdict is also checked over the
         whole band.  Both codes write only at 0.1 s,
@@ -40,8 +42,7 @@ cube    tutorials/swingingCube on N^3 cells or C3D8/C3D8R elements, to
         t = 0.004 s, against the closed-form solution (analytic.py):
           e_v   = sqrt(sum_i w_i |v_i - v(X_i)|^2), the velocity vector:
                   touchFoam cell centres with cell volumes, CalculiX nodes
-                  with trapezoidal weights (the peer's post_cube.py, which
-                  is run as a check);
+                  with trapezoidal weights;
           e_vx  = the same for v_x alone (validation/swingingCube's
                   number; e_v = sqrt(3) e_vx by the cube's symmetry);
           e_Pxx = sqrt(sum_e V_e (P_xx,e - P_xx(X_e))^2): touchFoam's cell
@@ -90,16 +91,20 @@ import calculixChecks  # noqa: E402
 import ccx  # noqa: E402
 import report  # noqa: E402
 from cubeErrors import (CUBE_END, check_cube_material,  # noqa: E402
-                        ccx_cube_errors, peer_cube_ev, touch_cube_errors)
+                        ccx_cube_errors, touch_cube_errors)
 
 COLUMN_END = 0.1
 COLUMN_NU = 0.45
 TOP = 6.0
 RMIN = 0.25              # postprocess.column_twist's default
-#: reference twist at 0.1 s and its band [deg] when --reference-size is not
-#: given: the bracket of the 24x144x24 runs (README.md, finding 2)
-REFERENCE = 330.7
-BAND = (328.9, 332.6)
+#: the converged twist at 0.1 s and its band [deg] when --reference-size
+#: is not given: both codes' Richardson extrapolations
+#: (validation/twistingColumn/reference.py, FINDINGS.md there)
+REFERENCE_FILE = os.path.join(HERE, "..", "twistingColumn", "reference.json")
+with open(REFERENCE_FILE) as _f:
+    _converged = json.load(_f)
+REFERENCE = round(_converged["reference"], 2)
+BAND = tuple(round(b, 2) for b in _converged["band"])
 REFERENCE_SETTING = "default"
 REFERENCE_ELEMENT = "C3D8R"
 NICE = ("nice", "-n", "19")
@@ -303,9 +308,9 @@ def ccx_top(folder, job, t):
 def check_column_material():
     mat = cases.material(run.tutorial_dir("twistingColumn"))
     for key in ("E", "rho"):
-        if not math.isclose(mat[key], ccx.COLUMN_PEER[key], rel_tol=1e-12):
+        if not math.isclose(mat[key], ccx.COLUMN_DECK[key], rel_tol=1e-12):
             raise ValueError("twistingColumn %s = %g, the CalculiX deck has "
-                             "%g" % (key, mat[key], ccx.COLUMN_PEER[key]))
+                             "%g" % (key, mat[key], ccx.COLUMN_DECK[key]))
 
 
 def reference_twist(args):
@@ -318,9 +323,9 @@ def reference_twist(args):
     """
     if not args.reference_size:
         return args.reference, list(args.band), {
-            "source": "--reference and --band; the defaults are the bracket "
-            "of CalculiX %s and touchFoam %s on 24x144x24, README.md"
-            % (REFERENCE_ELEMENT, REFERENCE_SETTING)}
+            "source": "--reference and --band; the defaults are those of "
+            "validation/twistingColumn/reference.json, both codes' "
+            "Richardson extrapolations"}
     n = args.reference_size
     twists = {}
     for code in ("ccx-" + REFERENCE_ELEMENT,
@@ -417,7 +422,6 @@ def analyse_cube(args):
             folder = run_dir("cube", n, "ccx-" + element)
             info = _load(folder)
             e = ccx_cube_errors(folder, info["job"], n, sol)
-            e["peerEv"] = peer_cube_ev(folder, info["job"], n)
             rows.append(_cube_row("CalculiX", element, info, e))
         for setting in args.cube_settings:
             folder = run_dir("cube", n, "touchFoam-" + setting)
@@ -542,7 +546,6 @@ def main():
         if not args.no_run:
             run.check_openfoam()
             ccx.check_ccx()
-            ccx.peer_dir()
             run_all(args)
         results = {"date": datetime.date.today().isoformat(),
                    "command": " ".join(sys.argv),

@@ -2,7 +2,6 @@
 cell values and CalculiX's nodal velocities and element stresses
 (compare.py's cube rows; README.md, 'Definitions')."""
 
-import json
 import math
 import os
 import sys
@@ -23,10 +22,10 @@ CUBE_END = 0.004
 def check_cube_material():
     mat = cases.material(run.tutorial_dir("swingingCube"))
     for key in ("E", "nu", "rho"):
-        if not math.isclose(mat[key], ccx.CUBE_PEER[key], rel_tol=1e-12):
+        if not math.isclose(mat[key], ccx.CUBE_DECK[key], rel_tol=1e-12):
             raise ValueError("swingingCube %s = %g, the CalculiX deck has %g"
-                             % (key, mat[key], ccx.CUBE_PEER[key]))
-    p = ccx.CUBE_PEER
+                             % (key, mat[key], ccx.CUBE_DECK[key]))
+    p = ccx.CUBE_DECK
     return analytic.SwingingCube(E=p["E"], nu=p["nu"], rho=p["rho"],
                                  U0=p["U0"])
 
@@ -72,18 +71,3 @@ def ccx_cube_errors(folder, job, n, sol):
             "ePxx": float(np.sqrt(V * np.sum(dP[:, 0] ** 2))),
             "ePnormal": float(np.sqrt(V * np.sum(dP ** 2) / 3)),
             "time": t, "integrationPoints": int(counts.max())}
-
-
-def peer_cube_ev(folder, job, n):
-    """L2_v of the peer's post_cube.py (a check of e_v), or None."""
-    log = os.path.join(folder, job + ".log")      # post_cube.py reads it
-    if not os.path.exists(log):
-        os.symlink("log.ccx", log)
-    try:
-        run.run([run.PYTHON, os.path.join(ccx.peer_dir(), "post_cube.py"),
-                 job, str(n)], folder, "post_cube")
-        with open(os.path.join(folder, job + ".json")) as f:
-            return json.load(f)["L2_v"]
-    except (run.RunError, OSError, KeyError, ValueError) as err:
-        print("post_cube.py check skipped: %s" % str(err).split("\n")[0])
-        return None

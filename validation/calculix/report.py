@@ -130,7 +130,7 @@ def column_markdown(res):
         "Twist: mean rotation about +Y of the top-face points at least %g "
         "from the axis; error = |twist - %.1f deg|, reference band "
         "%.1f-%.1f deg (%s).  'all points': the mean over every top-face "
-        "point but the axis (the peer README's point set)." % (
+        "point but the axis." % (
             res["rmin"], ref, band[0], band[1],
             res["referenceFrom"]["source"]), "",
     ]
@@ -189,20 +189,20 @@ def column_markdown(res):
 def cube_markdown(res):
     lines = [
         "### Swinging cube, t = %g s" % res["time"], "",
-        "e_v: velocity vector (the peer's post_cube.py L2_v, its value in "
-        "'post_cube'); e_vx: v_x alone (validation/swingingCube); e_Pxx: "
+        "e_v: velocity vector (CalculiX: nodes with trapezoidal weights); "
+        "e_vx: v_x alone (validation/swingingCube); e_Pxx: "
         "P_xx (CalculiX: element stress, mean of the integration points, at "
         "the centroid).", "",
         "| N | code | setting | steps | dt0 [s] | wall [s] | CPU [s] | e_v "
-        "[m/s] | post_cube | e_vx [m/s] | e_Pxx [Pa] | load |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+        "[m/s] | e_vx [m/s] | e_Pxx [Pa] | load |",
+        "|---|---|---|---|---|---|---|---|---|---|---|"]
     for n, mesh in res["meshes"].items():
         for r in mesh["runs"]:
-            lines.append("| %s | %s | %s | %s | %s | %.2f | %.2f | %.3e | %s "
+            lines.append("| %s | %s | %s | %s | %s | %.2f | %.2f | %.3e "
                          "| %.3e | %.3e | %.1f-%.1f |" % (
                              n, r["code"], r["variant"], r["steps"],
                              _g(r["dt0"]), r["wall"], r["cpu"], r["ev"],
-                             _g(r.get("peerEv"), "%.3e"), r["evx"],
+                             r["evx"],
                              r["ePxx"], r["load"][0], r["load"][1]))
     lines += ["", "Fastest touchFoam setting with an error at most "
               "CalculiX's, same mesh:", "",

@@ -44,11 +44,12 @@ normal random values (C_noise, about 0.54: rough, but not alternating).
 A grid-scale mode keeps its C under refinement; a resolved field's C
 falls with h.
 
-CalculiX: run_B.sh of the peer's folder $CALCULIX_PEER (C3D8R, DTMAX = 6e-9 s as its
-README says, one thread) for each N,M,NY of --calculix, in
-runs/calculix/; final length (max current y of the nodes), radius of the
-impact face and peak PEEQ (integration points) from its post_taylor.py,
-wall time of ccx from its JOB.time.
+CalculiX: the quarter-bar deck of ../calculix/decks.py (C3D8R, O-grid
+N,M,NY of --calculix, the increment capped at 6e-9 s: CalculiX's own goes
+unstable near 45 us; one thread), in runs/calculix/; final length (max
+current y of the nodes), radius of the impact face and peak PEEQ
+(integration points) read back from its .frd and .dat, wall time of the
+ccx process.
 
 Writes results.json, results.md and taylor.png (when matplotlib is
 available).  --no-run re-analyses runs/ (wall times are stored there).
@@ -64,7 +65,6 @@ import argparse
 import json
 import math
 import os
-import shutil
 import sys
 import time
 
@@ -72,6 +72,8 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
+
+sys.path.insert(0, os.path.join(HERE, "..", "calculix"))
 
 from touchfoam.provenance import log_steps_and_clock  # noqa: E402
 from touchfoam import checks, run  # noqa: E402
@@ -82,22 +84,14 @@ from touchfoam.monitor import read_monitor  # noqa: E402
 from taylorLiterature import (CHECKER_FIELDS, CHECKER_FREE,  # noqa: E402,F401
                               LITERATURE, ONSET, ORDER_RANGE, QUANTITIES)
 from taylorReport import plot, write_markdown  # noqa: E402
+import ccx  # noqa: E402
+import decks  # noqa: E402
 
 T_END = 8e-5
 V0 = 227.0              # impact speed [m/s] (doc/benchmarks.md 3)
 TUTORIAL = "taylorImpact"
-CCX_DTMAX = "6e-9"      # peer README B: CalculiX's own increment diverges
-CCX_FREQ = "667"        # output every ~4 us, as the peer's baselines
-
-
-def peer_dir():
-    """The folder of the CalculiX peer's scripts, $CALCULIX_PEER."""
-    path = os.environ.get("CALCULIX_PEER", "")
-    if not path:
-        raise run.RunError("set CALCULIX_PEER to the folder of the CalculiX"
-                           " peer's scripts (run_B.sh), or run with"
-                           " --no-calculix")
-    return os.path.abspath(path)
+CCX_DTMAX = 6e-9        # CalculiX's own increment (1.2e-8 s) diverges
+CCX_FREQ = 667          # output every ~4 us
 
 
 def case_dir(n):
@@ -109,7 +103,8 @@ def ccx_dir():
 
 
 def ccx_job(mesh):
-    return "B_C3D8R_%dx%dx%d_dt%s" % (tuple(mesh) + (CCX_DTMAX,))
+    return "B_C3D8R_%dx%dx%d_dt%s" % (tuple(mesh) + (
+        ("%g" % CCX_DTMAX).replace("e-0", "e-"),))
 
 
 # -- runs ---------------------------------------------------------------------
@@ -136,23 +131,20 @@ def run_touch(n):
 
 
 def run_calculix(mesh):
-    """run_B.sh of the peer for mesh (N, M, NY) in runs/calculix/B."""
-    script = os.path.join(peer_dir(), "run_B.sh")
-    if not os.path.exists(script):
-        raise run.RunError("no CalculiX peer at %s (set $CALCULIX_PEER)"
-                           % peer_dir())
-    if shutil.which("ccx") is None:
-        raise run.RunError("ccx not installed: bin/touchSetup "
-                           "--with-calculix")
+    """CalculiX on the O-grid mesh (N, M, NY) in runs/calculix/: the deck
+    of ../calculix/decks.py (C3D8R, increment capped at CCX_DTMAX), ccx on
+    one thread; its wall and CPU time go to <job>.time.json."""
+    ccx.check_ccx()
     job = ccx_job(mesh)
     os.makedirs(ccx_dir(), exist_ok=True)
     print("running CalculiX %s in %s" % (job, ccx_dir()), flush=True)
-    start = time.time()
-    run.run([script, job] + [str(m) for m in mesh] + ["C3D8R", "80"],
-            ccx_dir(), "run_B." + job,
-            env={"WORK": ccx_dir(), "DTMAX": CCX_DTMAX, "FREQ": CCX_FREQ,
-                 "OMP_NUM_THREADS": "1"})
-    print("  done in %.0f s" % (time.time() - start), flush=True)
+    decks.taylor_deck(os.path.join(ccx_dir(), job + ".inp"), *mesh,
+                      element="C3D8R", t_end=T_END, dt_max=CCX_DTMAX,
+                      output_every=CCX_FREQ)
+    wall, cpu = ccx.run_ccx(ccx_dir(), job)
+    with open(os.path.join(ccx_dir(), job + ".time.json"), "w") as f:
+        json.dump({"wall": wall, "cpu": cpu}, f, indent=1)
+    print("  done in %.0f s" % wall, flush=True)
 
 
 # -- our measurements ---------------------------------------------------------
@@ -382,24 +374,38 @@ def convergence(n, values):
 # -- CalculiX -----------------------------------------------------------------
 
 def calculix_result(mesh):
-    base = os.path.join(ccx_dir(), "B", ccx_job(mesh))
-    with open(base + ".json") as f:
-        res = json.load(f)
-    with open(base + ".time") as f:
-        timing = f.read().split()
+    """Final length (max current y of the nodes, and of the axis' top
+    node), impact-face radius (max current sqrt(x^2 + z^2) of the nodes at
+    y = 0) and peak PEEQ (integration points, and nodal) at the last
+    increment, from the .frd and .dat of run_calculix."""
+    job = ccx_job(mesh)
+    base = os.path.join(ccx_dir(), job)
+    with open(base + ".time.json") as f:
+        timing = json.load(f)
+    nodes, last = ccx.read_frd(base + ".frd", ("DISP", "PE"))
+    disp = last["DISP"]
+    current = {i: np.add(x, disp[i][:3]) for i, x in nodes.items()}
+    impact = [i for i, x in nodes.items() if abs(x[1]) < 1e-12]
+    blocks = ccx.read_dat(base + ".dat")
+    monitored = ccx.last_block(blocks, "displacements", "NMON")
+    peeq = ccx.last_block(blocks, "equivalent", "EALL")
+    axis = [i for i, x in nodes.items() if abs(x[0]) < 1e-12
+            and abs(x[2]) < 1e-12]
+    top = max(axis, key=lambda i: nodes[i][1])
     N, M, NY = mesh
     return {
         "mesh": "%d/%d/%d" % (N, M, NY),
-        "job": ccx_job(mesh),
+        "job": job,
         "elements": (N * N + 2 * N * M) * NY,
-        "increments": res["increments_last_step_frd"],
-        "time": res["t_final"],
-        "ccxWallTime_s": float(timing[0]),
-        "length_mm": res["length_max_y_mm"],
-        "lengthAxis_mm": res["length_final_mm"],
-        "footRadius_mm": res["radius_impact_mm"],
-        "peakPlasticStrain": res["peeq_max_ip"],
-        "peakPlasticStrainNodal": res["peeq_max_nodal"],
+        "increments": ccx.increments(base + ".frd"),
+        "time": monitored["time"],
+        "ccxWallTime_s": timing["wall"],
+        "length_mm": 1e3 * max(x[1] for x in current.values()),
+        "lengthAxis_mm": 1e3 * current[top][1],
+        "footRadius_mm": 1e3 * max(math.hypot(current[i][0], current[i][2])
+                                   for i in impact),
+        "peakPlasticStrain": max(row[-1] for row in peeq["rows"]),
+        "peakPlasticStrainNodal": max(v[0] for v in last["PE"].values()),
     }
 
 
@@ -515,7 +521,7 @@ def main():
     parser.add_argument("--n", type=int, nargs="+", default=[3, 6, 9])
     parser.add_argument("--calculix", nargs="+", default=["4,4,34",
                                                            "6,6,50"],
-                        help="CalculiX meshes N,M,NY (run_B.sh)")
+                        help="CalculiX meshes N,M,NY (decks.taylor_deck)")
     parser.add_argument("--no-calculix", action="store_true")
     parser.add_argument("--no-run", action="store_true",
                         help="only post-process the existing runs")
