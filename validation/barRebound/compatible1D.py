@@ -21,11 +21,39 @@ restricted to a plane wave on N x 1 x 1 cubes between mirror planes:
 - contact when the end point reaches the wall, released when the wall's
   force (reaction + damping) would pull.
 
-Variants (--variant) are the experiments of FINDINGS.md.  Prints per run
-E/E0 at t = 0.625, 1.5 (arrival), the separation and 3.0, the wall stress
-over the middle 80 % of the contact and its ringing, and the precursor
-(largest tension ahead of the compressive front at t = 1.0, / Z v0) and
-overshoot (largest compression beyond Z v0 behind it).
+Variants (--variant, comma-separated key=value; "default" is none), the
+experiments of FINDINGS.md:
+    rec=mc|superbee|minmod|none|kX   the reconstruction's slopes (mc is
+                        Barth-Jespersen on the central gradient in 1D)
+    char=1              limit s -+ Z v instead of v and s
+    map=rec|off|zero|constX|floorX|mc|superbee|minmod   the point map's
+                        factor of the central gradient: the
+                        reconstruction's (default), 1, 0, X, max(rec, X),
+                        or another limiter's slope over the central one
+    tvd=LIMITER:harm|min|mean   the map's slope as a alpha + b beta of
+                        the one-sided differences (per face term)
+    ht=c1all|c1|bj|zero|zero-kX|zero-bj|zsP   per cell and point factors:
+                        c1 bounds each extrapolation by the point's two
+                        cells; the suffix-less forms apply it only where
+                        the cell is downstream of the wave through the
+                        point (the jump across it split on s -+ Z v);
+                        zero: 0 there and 1 (kX: X, bj: the cell's factor)
+                        elsewhere; zsP: downstream fac^P (P = 0: 0 where
+                        the limiter acts)
+    fct=1|2, fctv=1     a Zalesak blend of the unlimited map into the
+                        limited one per point, the cells' s (and with
+                        fctv v) kept within their neighbours' values
+    pshare=quad|powX, pcoef=X   the point upwinding's share phi^2 (phi^X)
+                        and coefficient
+    fshare=lin|one      the face upwinding's share phi (or 1), not phi^2
+    wall=X              the wall's damping of the fixed direction times X
+Prints per run E/E0 at t = 0.625, 1.5 (arrival), the separation and 3.0,
+the wall's force over the middle 80 % of the contact and its ringing, the
+precursor (largest tension ahead of the compressive front at t = 1.0,
+/ Z v0) and overshoot (largest compression beyond Z v0 behind it), the
+largest energy rise in a step, and the energy taken by the face
+upwinding, the point upwinding and the wall's damping up to the
+separation (/E0).
 """
 import argparse
 import numpy as np
