@@ -47,6 +47,9 @@ experiments of FINDINGS.md:
                         and coefficient
     fshare=lin|one      the face upwinding's share phi (or 1), not phi^2
     wall=X              the wall's damping of the fixed direction times X
+    koren=C             shares from third-order (kappa = 1/3) face values
+                        with Koren's bounds (C = 2); with ht=rec the map
+                        takes each cell's own increment to each point
 Prints per run E/E0 at t = 0.625, 1.5 (arrival), the separation and 3.0,
 the wall's force over the middle 80 % of the contact and its ringing, the
 precursor (largest tension ahead of the compressive front at t = 1.0,
@@ -194,6 +197,23 @@ class Model:
         # reconstructed face values: face a between cell a-1 (L) and a (R)
         vL = v + 0.5 * h * gv; vR = v - 0.5 * h * gv   # at right / left face
         sL = s + 0.5 * h * gs; sR = s - 0.5 * h * gs
+        if "koren" in opt:
+            # third order (kappa = 1/3), Koren's bounds (c): separate
+            # increments to the right and left faces, inside cells only
+            c = float(opt["koren"])
+            def kor(q):
+                a = q[1:-1] - q[:-2]; b = q[2:] - q[1:-1]
+                same = a * b > 0; sg = np.sign(a); A, B = np.abs(a), np.abs(b)
+                up = np.where(same, sg * 0.5 * np.minimum(np.minimum(c * B, (A + 2 * B) / 3), c * A), 0)
+                dn = np.where(same, sg * 0.5 * np.minimum(np.minimum(c * A, (B + 2 * A) / 3), c * B), 0)
+                return up, dn
+            if opt.get("char", "0") == "1":
+                u1, d1 = kor(s - v); u2, d2 = kor(s + v)
+                uv, dv_ = 0.5 * (u2 - u1), 0.5 * (d2 - d1); us, ds_ = 0.5 * (u1 + u2), 0.5 * (d1 + d2)
+            else:
+                uv, dv_ = kor(v); us, ds_ = kor(s)
+            vL[1:-1] = v[1:-1] + uv; vR[1:-1] = v[1:-1] - dv_
+            sL[1:-1] = s[1:-1] + us; sR[1:-1] = s[1:-1] - ds_
         # nodal forces f_a = s_L - s_R (outside: 0)
         f = np.zeros(N + 1)
         f[1:-1] = s[:-1] - s[1:]
@@ -268,7 +288,7 @@ class Model:
             kind = opt["ht"]
             if kind.startswith("bj"):
                 fl = fr = fac.copy()
-            if not kind.endswith("all"):
+            if not kind.endswith("all") and kind != "rec":
                 # downstream: the wave through point a runs into cell e
                 ds = np.diff(s); dv = np.diff(v)
                 right = np.abs(ds - dv) > np.abs(ds + dv)    # per interior point
@@ -284,6 +304,9 @@ class Model:
                 elif kind.startswith("zero-k"):
                     up = float(kind[6:])
                 fl = np.where(dl, 0.0, up); fr = np.where(dr, 0.0, up)
+            if kind == "rec":
+                # the reconstruction's own increments to each point
+                fr = ratio(vL - v, extr); fl = ratio(vR - v, extl)
             if kind.startswith("zs"):
                 # downstream: 0 where the cell's limiter acts, up: 1 or k
                 p = float(kind[2:]) if len(kind) > 2 else 0.0
