@@ -73,7 +73,9 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
 
-sys.path.insert(0, os.path.join(HERE, "..", "calculix"))
+# The project's copy of the CalculiX tools, also from a quick copy of
+# this study under validationQuick/
+sys.path.insert(0, os.path.join(HERE, "..", "..", "validation", "calculix"))
 
 from touchfoam.provenance import log_steps_and_clock  # noqa: E402
 from touchfoam import checks, run  # noqa: E402

@@ -41,7 +41,9 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bin", "python"))
-sys.path.insert(0, os.path.join(HERE, "..", "calculix"))
+# The project's copy of the CalculiX tools, also from a quick copy of
+# this study under validationQuick/
+sys.path.insert(0, os.path.join(HERE, "..", "..", "validation", "calculix"))
 
 from touchfoam import (analytic, cases, monitor, postprocess,  # noqa
                        provenance, run)
