@@ -363,20 +363,22 @@ Foam::scalar Foam::contactSurfaces::pointGap
     const vector& n
 ) const
 {
-    const scalar centreGap = (x_[gj] - x_[gi]) & n;
-
-    // Side 1's free points against side 2's plane, side 2's against side
-    // 1's: the lowest of them, or the centres' gap if lower
-    scalar gap = centreGap;
+    // Side 1's free points against side 2's face plane (its centre and
+    // own normal), side 2's against side 1's: the lowest of them, or the
+    // centres' gap along n if lower.  Against the plane through the
+    // partner's centre normal to n instead, the poles of two balls, which
+    // touch, were a face's height difference apart
+    scalar gap = (x_[gj] - x_[gi]) & n;
     for (label o = offsetStart_[gi]; o < offsetStart_[gi + 1]; ++o)
     {
-        gap = min(gap, centreGap - (pointOffsets_[o] & n));
+        gap = min(gap, (x_[gi] + pointOffsets_[o] - x_[gj]) & n_[gj]);
     }
     for (label o = offsetStart_[gj]; o < offsetStart_[gj + 1]; ++o)
     {
-        gap = min(gap, centreGap + (pointOffsets_[o] & n));
+        gap = min(gap, (x_[gj] + pointOffsets_[o] - x_[gi]) & n_[gi]);
     }
     return gap;
 }
+
 
 // ************************************************************************* //
