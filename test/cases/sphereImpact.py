@@ -17,16 +17,17 @@ coarsest mesh of the study (validation/sphereImpact/FINDINGS.md):
           per step) and the scheme's dissipation stays >= 0;
   sphere  that ball on an aluminium ball of the same radius at rest
           (bodyContact, FUpdate compatible, faces that match at the
-          start): the energy never grows; the peak force and the contact
-          time within TOLERANCE of the closed form; the balls' momenta at
-          the end within 0.03 |p0| of a rigid elastic exchange; the total
-          p_y (no wall, the symmetric planes push along x and z only)
-          within MOMENTUM_DRIFT of |p0|.  On this mesh bodyContact is far
-          from Hertz (a face enters contact when its centre reaches the
-          other surface, late on a curved body) and the momentum is
-          exchanged to 2e-3, not to round-off (FINDINGS.md): these
-          tolerances guard what it gives today (about 3 times it), not
-          the issue's 5 % and 1e-12.
+          start): the energy never grows; the peak of the force the balls
+          receive (their momentum change per step) and the contact time
+          within TOLERANCE of the closed form; the balls' momenta at the
+          end within 0.03 |p0| of a rigid elastic exchange; the total p_y
+          (no wall, the symmetric planes push along x and z only) within
+          MOMENTUM_DRIFT of |p0|, the issue's 1e-12 (measured 9e-15 since
+          the compatible update splits a point's reaction between the
+          contact and the symmetric plane; 1.9e-3 before).  The contact
+          time is 14 % short on this mesh (one face of each quarter cap is
+          in contact, the contact's radius is not resolved: FINDINGS.md),
+          so its tolerance guards today's value, not the issue's 5 %.
 Work folders: test/runs/sphereImpact/.
 """
 
@@ -46,11 +47,14 @@ N = 6
 #: 3 times the errors measured at -n 6 on 2026-12-05 (FINDINGS.md); the
 #: wall's contact time is held to the issue's 5 %: since the wall releases
 #: faces whose force would pull (e761893) the ball leaves earlier, -3.87 %
-#: (-0.76 % before, when the wall held it back with tension)
-TOLERANCE = {"wall": (0.08, 0.05), "sphere": (0.9, 0.2)}
+#: (-0.76 % before, when the wall held it back with tension).  Between
+#: the balls (2026-12-05, lowest free point entry, reactions split): the
+#: force they receive +0.59 %, the contact time -14.2 %
+TOLERANCE = {"wall": (0.08, 0.05), "sphere": (0.02, 0.2)}
 
-#: the total p_y drift allowed between the balls (measured 1.9e-3)
-MOMENTUM_DRIFT = 6e-3
+#: the total p_y drift allowed between the balls (measured 9.1e-15 at
+#: -n 6 on 2026-12-05; the issue's bound)
+MOMENTUM_DRIFT = 1e-12
 
 #: the balls' momenta at the end against a rigid elastic exchange
 EXCHANGE = 0.03
@@ -71,6 +75,12 @@ def solve(root, variant):
 
 def hertz_checks(variant, r, failures):
     tol_F, tol_t = TOLERANCE[variant]
+    if "appliedPeak" in r:
+        # Between the balls the force they receive, not the pairs'
+        # Riemann traction (the compatible update applies the contact
+        # through the points' constraint)
+        r = dict(r, peakForce=r["appliedPeak"],
+                 forceError=r["appliedForceError"])
     if not r["released"]:
         failures.append("%s: still in contact at the end" % variant)
     if abs(r["forceError"]) > tol_F:

@@ -59,6 +59,11 @@ def row(case, n):
              100 * r["timeError"], r["energyEnd"], r["energyGrowth"],
              "%.1e" % r["momentumDrift"] if "momentumDrift" in r else "-"),
           flush=True)
+    if "appliedPeak" in r:
+        print("      force the balls receive (their momentum change): peak "
+              "%.5g N, %+.2f %%" % (r["appliedPeak"],
+                                    100 * r["appliedForceError"]),
+              flush=True)
     return out
 
 

@@ -27,10 +27,27 @@ struct prescribeEqOp
 };
 
 
-//- The projector onto the complement of the range of a sum of fixed
-//  projectors M: Gram-Schmidt on its columns, a column that adds less
-//  than a relative 1e-6 to the span counting as in it
-static tensor freeProjector(const tensor& M)
+//- Whether two declarations are the same to the last bit (OpenFOAM's
+//  operator== on a VectorSpace allows a difference of VSMALL)
+template<class Type>
+static bool sameBits(const Type& a, const Type& b)
+{
+    for (direction d = 0; d < pTraits<Type>::nComponents; ++d)
+    {
+        if (component(a, d) != component(b, d))
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::tensor Foam::kinematicPointConstraints::freeProjector(const tensor& M)
 {
     const scalar scale = max(max(mag(M.x()), mag(M.y())), mag(M.z()));
 
@@ -57,24 +74,6 @@ static tensor freeProjector(const tensor& M)
 
     return tensor::I - fixed;
 }
-
-
-//- Whether two declarations are the same to the last bit (OpenFOAM's
-//  operator== on a VectorSpace allows a difference of VSMALL)
-template<class Type>
-static bool sameBits(const Type& a, const Type& b)
-{
-    for (direction d = 0; d < pTraits<Type>::nComponents; ++d)
-    {
-        if (component(a, d) != component(b, d))
-        {
-            return false;
-        }
-    }
-    return true;
-}
-
-} // End namespace Foam
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //

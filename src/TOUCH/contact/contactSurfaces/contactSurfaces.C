@@ -7,8 +7,6 @@ License
 
 #include "contactSurfaces.H"
 #include "bodyContactFvPatchVectorField.H"
-#include "indexedOctree.H"
-#include "treeDataPoint.H"
 #include "ListListOps.H"
 #include "Time.H"
 
@@ -18,22 +16,6 @@ namespace Foam
 {
     //- A face within this fraction of its size of its partner touches it
     static const scalar contactTouchingTolerance = 1e-6;
-
-    //- Opposed faces: the cosine of the angle of their normals below this
-    static const scalar contactOpposedCos = -0.5;
-
-    //- Lexicographic order of positions (ties of the pairing)
-    static bool before(const point& a, const point& b)
-    {
-        for (direction d = 0; d < point::nComponents; ++d)
-        {
-            if (a[d] != b[d])
-            {
-                return a[d] < b[d];
-            }
-        }
-        return false;
-    }
 
     //- Number of contact faces of this rank
     static label nContactFaces(const fvMesh& mesh, const labelList& patches)
@@ -72,106 +54,6 @@ Foam::labelList Foam::contactSurfaces::contactPatches
 }
 
 
-void Foam::contactSurfaces::setAllowed(const volVectorField& lm)
-{
-    const label n = patches_.size();
-    allowed_.setSize(n);
-
-    forAll(patches_, a)
-    {
-        allowed_[a].setSize(n, false);
-    }
-
-    forAll(patches_, a)
-    {
-        const bodyContactFvPatchVectorField& pf =
-            refCast<const bodyContactFvPatchVectorField>
-            (
-                lm.boundaryField()[patches_[a]]
-            );
-
-        if (pf.patches().empty())
-        {
-            allowed_[a] = true;
-            forAll(patches_, b)
-            {
-                allowed_[b][a] = true;
-            }
-            continue;
-        }
-
-        for (const word& name : pf.patches())
-        {
-            label b = -1;
-            forAll(patches_, c)
-            {
-                if (mesh_.boundary()[patches_[c]].name() == name)
-                {
-                    b = c;
-                }
-            }
-
-            if (b < 0)
-            {
-                wordList valid(patches_.size());
-                forAll(patches_, c)
-                {
-                    valid[c] = mesh_.boundary()[patches_[c]].name();
-                }
-
-                FatalErrorInFunction
-                    << "Entry 'patches' of patch " << pf.patch().name()
-                    << " in " << lm.name() << " names '" << name
-                    << "', which is not a bodyContact patch" << nl
-                    << "Valid: " << valid << nl
-                    << exit(FatalError);
-            }
-
-            allowed_[a][b] = true;
-            allowed_[b][a] = true;
-        }
-    }
-
-    // A pair's friction is the pair's: the two patches must give the same
-    // (each face acts as the first side of its pair with its own patch's
-    // law, so different laws would make the exchange depend on the side)
-    forAll(patches_, a)
-    {
-        const bodyContactFvPatchVectorField& pa =
-            refCast<const bodyContactFvPatchVectorField>
-            (
-                lm.boundaryField()[patches_[a]]
-            );
-
-        forAll(patches_, b)
-        {
-            const bodyContactFvPatchVectorField& pb =
-                refCast<const bodyContactFvPatchVectorField>
-                (
-                    lm.boundaryField()[patches_[b]]
-                );
-
-            if
-            (
-                b > a && allowed_[a][b]
-             && pa.friction().dict() != pb.friction().dict()
-            )
-            {
-                FatalErrorInFunction
-                    << "Patches " << pa.patch().name() << " and "
-                    << pb.patch().name() << " in 0/U (or 0/" << lm.name()
-                    << ") may touch but give different 'friction': "
-                    << pa.friction().dict() << " and "
-                    << pb.friction().dict() << nl
-                    << "Valid: the same friction sub-dictionary on both"
-                    << " (or on neither: frictionless)" << nl
-                    << exit(FatalError);
-            }
-        }
-    }
-}
-
-
 template<class Type>
 Foam::tmp<Foam::Field<Type>> Foam::contactSurfaces::gather
 (
@@ -195,153 +77,6 @@ Foam::tmp<Foam::Field<Type>> Foam::contactSurfaces::gather
             ListListOps::combine<Field<Type>>(all, accessOp<Field<Type>>())
         )
     );
-}
-
-
-void Foam::contactSurfaces::updateSearch()
-{
-    // Every rank holds every position: they take the same decision
-    bool rebuild = searchPositions_.size() != x_.size();
-    if (!rebuild)
-    {
-        const scalar limit = sqr(0.5*searchSize_);
-        forAll(x_, i)
-        {
-            if (magSqr(x_[i] - searchPositions_[i]) > limit)
-            {
-                rebuild = true;
-                break;
-            }
-        }
-    }
-
-    if (!rebuild || x_.empty())
-    {
-        return;
-    }
-
-    searchPositions_ = x_;
-    searchSize_ = Foam::sqrt(max(a_));
-
-    treeBoundBox bb(searchPositions_);
-    bb.inflate(1e-4);
-    bb.min() -= point::uniform(searchSize_);
-    bb.max() += point::uniform(searchSize_);
-
-    const indexedOctree<treeDataPoint> tree
-    (
-        treeDataPoint(searchPositions_), bb, 8, 10, 3.0
-    );
-
-    const label offset = globalFaces_.localStart();
-    const scalar radiusSqr = sqr(3*searchSize_);
-
-    candidates_.setSize(globalFaces_.localSize());
-    forAll(candidates_, i)
-    {
-        candidates_[i] = tree.findSphere(x_[offset + i], radiusSqr);
-        Foam::sort(candidates_[i]);
-    }
-}
-
-
-Foam::label Foam::contactSurfaces::partner
-(
-    const label i,
-    const label gi
-) const
-{
-    const point& xi = x_[gi];
-    const vector& ni = n_[gi];
-    const scalar reachSqr = sqr(2*searchSize_);
-    const scalar behind = -0.5*Foam::sqrt(a_[gi]);
-
-    label best = -1;
-    scalar bestLateral = GREAT;
-
-    for (const label gj : candidates_[i])
-    {
-        if (gj == gi || !allowed_[slot_[gi]][slot_[gj]])
-        {
-            continue;
-        }
-
-        const vector d(x_[gj] - xi);
-        if ((ni & n_[gj]) > contactOpposedCos || magSqr(d) > reachSqr)
-        {
-            continue;
-        }
-
-        // Not a face of the far side of the body (self-contact of a thin
-        // part): a partner lies at most half a face behind
-        if ((d & ni) < behind)
-        {
-            continue;
-        }
-
-        // The nearest to the normal line; ties to the smaller global
-        // index's position order, not to the order of the ranks
-        const scalar lateral = mag(d - (d & ni)*ni);
-        if
-        (
-            lateral < bestLateral - SMALL*searchSize_
-         || (
-                best >= 0
-             && lateral <= bestLateral + SMALL*searchSize_
-             && before(x_[gj], x_[best])
-            )
-        )
-        {
-            best = gj;
-            bestLateral = min(lateral, bestLateral);
-        }
-    }
-
-    // Its centre projects within about the partner face
-    if (best >= 0 && bestLateral > 0.75*Foam::sqrt(a_[best]))
-    {
-        return -1;
-    }
-
-    return best;
-}
-
-
-void Foam::contactSurfaces::checkMatching(const labelList& partners)
-{
-    labelList all(partners);
-    if (Pstream::parRun())
-    {
-        Pstream::listCombineGather(all, maxEqOp<label>());
-        Pstream::listCombineScatter(all);
-    }
-
-    label nPaired = 0;
-    label nOneWay = 0;
-    forAll(all, g)
-    {
-        if (all[g] >= 0)
-        {
-            ++nPaired;
-            nOneWay += all[all[g]] != g;
-        }
-    }
-
-    if (nPaired == 0)
-    {
-        return;
-    }
-    matchChecked_ = true;
-
-    if (nOneWay)
-    {
-        WarningInFunction
-            << nOneWay << " of " << nPaired << " contact faces with a"
-            << " partner are not their partner's partner: the faces that"
-            << " meet do not match.  Their forces are exchanged exactly but"
-            << " lumped by half areas, not by overlap areas (with FUpdate"
-            << " plain such a contact can be unstable)" << endl;
-    }
 }
 
 
@@ -468,6 +203,22 @@ void Foam::contactSurfaces::update
     a_ = gather(a);
     slot_ = gather(Field<label>(slot));
 
+    // The faces' free points: the lowest of them decides the entry
+    {
+        vectorField offsets;
+        labelField counts;
+        freePoints(lm, x, offsets, counts);
+        pointOffsets_ = gather(offsets);
+        const labelField allCounts(gather(counts));
+
+        offsetStart_.setSize(allCounts.size() + 1);
+        offsetStart_[0] = 0;
+        forAll(allCounts, g)
+        {
+            offsetStart_[g + 1] = offsetStart_[g] + allCounts[g];
+        }
+    }
+
     // 2. Candidates, rebuilt only when the faces moved far enough
     updateSearch();
 
@@ -549,12 +300,15 @@ void Foam::contactSurfaces::update
             // the contact plane: the pair's gap within the sum (with the
             // first side's alone, two equal bars released one stage early
             // did not touch again where a bar on a wall did: their gap of
-            // 3.8e-8 m against 2e-8 m, a wall's 1.9e-8 m against 2e-8 m)
+            // 3.8e-8 m against 2e-8 m, a wall's 1.9e-8 m against 2e-8 m).
+            // The gap of the lowest free point of either face, not of the
+            // centres: on curved bodies the centres of the faces that
+            // meet lag the surfaces (two balls touched 2.7 us late)
             contact[i] =
                 compressive
              && (
                     contact[i]
-                 || gap
+                 || pointGap(gi, gj, nij)
                  <= contactTouchingTolerance
                    *(Foam::sqrt(a_[gi]) + Foam::sqrt(a_[gj]))
                 );

@@ -15,6 +15,54 @@ Description
 #include "syncTools.H"
 #include "bodyContactFvPatchVectorField.H"
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- The condition's part of the reaction R at a point whose constraint
+//  combines its fixed directions (the sum of its faces' fixed projectors
+//  there, own) with those of other conditions (others): the r in the span
+//  of its own for which R - r lies in the span of the others'.  With one
+//  face's fixed projector applied to R instead, a contact meeting a
+//  symmetry plane took a part of the plane's reaction along its tilted
+//  normal, and a point held by contact faces of different normals lost the
+//  reaction's other fixed directions: two balls exchanged momentum along
+//  their axis to 2e-3 of it.  Where the spans overlap (no unique split)
+//  the others take what lies in their span
+static vector conditionPart
+(
+    const tensor& own,
+    const tensor& others,
+    const vector& R
+)
+{
+    const tensor fixed
+    (
+        tensor::I - kinematicPointConstraints::freeProjector(own)
+    );
+    // The others' sum is the point's total less the own one: round-off
+    // where no other condition fixes a direction
+    if (mag(others) <= 1e-9*mag(own))
+    {
+        return fixed & R;
+    }
+
+    // rest: onto the complement of the others' span; r = fixed r solves
+    // rest r = rest R: (fixed rest fixed) r = fixed rest R on the own span,
+    // the identity on its complement
+    const tensor rest(kinematicPointConstraints::freeProjector(others));
+    const tensor M((fixed & rest & fixed) + tensor::I - fixed);
+    if (det(M) > 1e-4)
+    {
+        return inv(M) & (fixed & (rest & R));
+    }
+    return rest & R;
+}
+
+} // End namespace Foam
+
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 void Foam::deformationUpdates::compatible::addConditionRates
@@ -193,6 +241,26 @@ void Foam::deformationUpdates::compatible::reportWallForces
             mesh, pointMarks_, plusEqOp<label>(), label(0)
         );
 
+        // The sum of the condition's own fixed projectors at each point,
+        // on all ranks: the rest of the point's sum is the other
+        // conditions' (a symmetry plane the contact meets)
+        tensorField ownSum(meshPoints.size(), Zero);
+        forAll(localFaces, i)
+        {
+            const tensor fixed(tensor::I - free[i]);
+            if (magSqr(fixed) > SMALL)
+            {
+                for (const label pointj : localFaces[i])
+                {
+                    ownSum[pointj] += fixed;
+                }
+            }
+        }
+        syncTools::syncPointList
+        (
+            mesh, meshPoints, ownSum, plusEqOp<tensor>(), tensor::zero
+        );
+
         // The wall's part of the constraint's reaction at those points,
         // each rank its share
         vector reaction(Zero);
@@ -201,12 +269,13 @@ void Foam::deformationUpdates::compatible::reportWallForces
             if (fixingFace[j] >= 0)
             {
                 const label pointi = meshPoints[j];
-                const tensor fixed(tensor::I - free[fixingFace[j]]);
                 const vector share
                 (
+                    conditionPart
                     (
-                        fixed
-                      & constraints_.reaction(pointi, pointForce_[pointi])
+                        ownSum[j],
+                        constraints_.fixedSum(pointi) - ownSum[j],
+                        constraints_.reaction(pointi, pointForce_[pointi])
                     )/pointMarks_[pointi]
                 );
                 reaction += share;

@@ -7,6 +7,8 @@ License
 
 #include "riemannUpdate.H"
 #include "emptyPolyPatch.H"
+#include "kinematicPointConstraints.H"
+#include "syncTools.H"
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
@@ -47,6 +49,10 @@ void Foam::deformationUpdates::riemannUpdate::momentumRates
         }
     );
 
+    tensorField fixedSum
+    (
+        mirrorsFormed_ ? 0 : faces_.mesh().nPoints(), Zero
+    );
     faces_.forAllSolidPatches
     (
         law_,
@@ -56,10 +62,24 @@ void Foam::deformationUpdates::riemannUpdate::momentumRates
             const fvPatch& patch,
             solidFluxFvPatchVectorField& condition,
             const solidFluxFvPatchVectorField::interiorState& state,
-            const solidFluxFvPatchVectorField::interiorState&
+            const solidFluxFvPatchVectorField::interiorState& reference
         )
         {
-            boundaryFlux(patch, condition, state, torque);
+            // A mirror's plane is fixed in space: its flux with the
+            // reference normals (the whole body's face there has the
+            // normal of (F + R F R)^-T N, along N); with the boundary
+            // cell's cof F N, off N by O(h) where the cell shears, the
+            // plane's traction pushed along the plane and its velocity
+            // crossed it
+            const bool mirror = condition.mirror();
+            boundaryFlux
+            (
+                patch, condition, mirror ? reference : state, torque
+            );
+            if (mirror && !mirrorsFormed_)
+            {
+                addMirror(patch, condition, reference, fixedSum);
+            }
 
             const vectorField& pC = pC_[patch.index()];
             const vectorField& tC = tC_[patch.index()];
@@ -108,6 +128,11 @@ void Foam::deformationUpdates::riemannUpdate::momentumRates
         faceVelocity_,
         pointV
     );
+    if (!mirrorsFormed_)
+    {
+        formMirrors(fixedSum);
+    }
+    constrainMirrorPoints(pointV);
 }
 
 
@@ -152,6 +177,10 @@ void Foam::deformationUpdates::riemannUpdate::momentumRatesOfMaterials
     );
 
     // A boundary face's flux is its cell's material's (solidFaces)
+    tensorField fixedSum
+    (
+        mirrorsFormed_ ? 0 : faces_.mesh().nPoints(), Zero
+    );
     faces_.forAllSolidPatches
     (
         law_,
@@ -161,10 +190,24 @@ void Foam::deformationUpdates::riemannUpdate::momentumRatesOfMaterials
             const fvPatch& patch,
             solidFluxFvPatchVectorField& condition,
             const solidFluxFvPatchVectorField::interiorState& state,
-            const solidFluxFvPatchVectorField::interiorState&
+            const solidFluxFvPatchVectorField::interiorState& reference
         )
         {
-            boundaryFlux(patch, condition, state, torque);
+            // A mirror's plane is fixed in space: its flux with the
+            // reference normals (the whole body's face there has the
+            // normal of (F + R F R)^-T N, along N); with the boundary
+            // cell's cof F N, off N by O(h) where the cell shears, the
+            // plane's traction pushed along the plane and its velocity
+            // crossed it
+            const bool mirror = condition.mirror();
+            boundaryFlux
+            (
+                patch, condition, mirror ? reference : state, torque
+            );
+            if (mirror && !mirrorsFormed_)
+            {
+                addMirror(patch, condition, reference, fixedSum);
+            }
 
             const vectorField& pC = pC_[patch.index()];
             const vectorField& tC = tC_[patch.index()];
@@ -211,6 +254,77 @@ void Foam::deformationUpdates::riemannUpdate::momentumRatesOfMaterials
     }
 
     pointFit_.interpolate(v, 1, faceVelocity_, pointV);
+    if (!mirrorsFormed_)
+    {
+        formMirrors(fixedSum);
+    }
+    constrainMirrorPoints(pointV);
+}
+
+
+void Foam::deformationUpdates::riemannUpdate::addMirror
+(
+    const fvPatch& patch,
+    const solidFluxFvPatchVectorField& condition,
+    const solidFluxFvPatchVectorField::interiorState& reference,
+    tensorField& fixedSum
+) const
+{
+    tensorField free(patch.size());
+    vectorField velocity(patch.size());
+    condition.constraint(reference, free, velocity);
+
+    const faceList& faces = faces_.mesh().faces();
+    forAll(free, i)
+    {
+        const tensor fixed(tensor::I - free[i]);
+        for (const label pointi : faces[patch.start() + i])
+        {
+            fixedSum[pointi] += fixed;
+        }
+    }
+}
+
+
+void Foam::deformationUpdates::riemannUpdate::formMirrors
+(
+    tensorField& fixedSum
+)
+{
+    syncTools::syncPointList
+    (
+        faces_.mesh(), fixedSum, plusEqOp<tensor>(), tensor::zero
+    );
+
+    DynamicList<label> points;
+    DynamicList<tensor> free;
+    forAll(fixedSum, pointi)
+    {
+        if (magSqr(fixedSum[pointi]) > 0)
+        {
+            points.append(pointi);
+            free.append
+            (
+                kinematicPointConstraints::freeProjector(fixedSum[pointi])
+            );
+        }
+    }
+    mirrorPoints_.transfer(points);
+    mirrorFree_.transfer(free);
+    mirrorsFormed_ = true;
+}
+
+
+void Foam::deformationUpdates::riemannUpdate::constrainMirrorPoints
+(
+    vectorField& pointV
+) const
+{
+    forAll(mirrorPoints_, m)
+    {
+        vector& v = pointV[mirrorPoints_[m]];
+        v = mirrorFree_[m] & v;
+    }
 }
 
 
@@ -227,7 +341,8 @@ Foam::deformationUpdates::riemannUpdate::riemannUpdate
 :
     deformationUpdate(controls, faces, law, riemann, reconstruction),
     faceVelocity_(faces.mesh().nFaces(), Zero),
-    pointFit_(faces.mesh())
+    pointFit_(faces.mesh()),
+    mirrorsFormed_(false)
 {}
 
 
