@@ -83,7 +83,7 @@ PERTURBATIONS = [
      "the wall's acoustic impedance 1.02 Up",
      case_test("rigidWallBounce"),
      ("src/TOUCH/contact/rigidWall/"
-      "rigidWallFvPatchVectorField.C",
+      "rigidWallFvPatchVectorFieldFlux.C",
       "nn & (s.t[facei] - s.Up[facei]*(s.p[facei] - wallMomentum));",
       "nn & (s.t[facei] - 1.02*s.Up[facei]*(s.p[facei] - wallMomentum));")),
     ("orderExpected", "temporal order", "reference",
