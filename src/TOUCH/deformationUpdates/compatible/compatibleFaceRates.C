@@ -15,44 +15,7 @@ Description
 
 #include "compatible.H"
 
-// * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
-
-namespace Foam
-{
-
-//- The share in [0, 1] of a cell jump that the reconstructed jump keeps
-//  along it: upwinding phi (cell jump) damps like the reconstructed jump in
-//  smooth regions (phi = O(h)) yet can never feed energy, which the
-//  reconstructed jump itself does where it opposes the cell jump (least-
-//  squares gradients on tetrahedra)
-static inline scalar jumpShare(const vector& reconstructed, const vector& cell)
-{
-    const scalar cellSqr = magSqr(cell);
-
-    if (cellSqr < VSMALL)
-    {
-        return 0;
-    }
-
-    return min(max((reconstructed & cell)/cellSqr, scalar(0)), scalar(1));
-}
-
-} // End namespace Foam
-
-
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
-
-Foam::scalar Foam::deformationUpdates::compatible::upwindShare
-(
-    const vector& reconstructed,
-    const vector& cell
-) const
-{
-    const scalar phi = jumpShare(reconstructed, cell);
-
-    return quadraticShare_ ? phi*phi : phi;
-}
-
 
 inline Foam::vector Foam::deformationUpdates::compatible::upwindForce
 (
