@@ -82,8 +82,8 @@ PERTURBATIONS = [
     ("wallImpedance", "bar on the rigid wall", "code",
      "the wall's acoustic impedance 1.02 Up",
      case_test("rigidWallBounce"),
-     ("src/TOUCH/boundaryConditions/rigidWall/"
-      "rigidWallFvPatchVectorField.C",
+     ("src/TOUCH/contact/rigidWall/"
+      "rigidWallFvPatchVectorFieldFlux.C",
       "nn & (s.t[facei] - s.Up[facei]*(s.p[facei] - wallMomentum));",
       "nn & (s.t[facei] - 1.02*s.Up[facei]*(s.p[facei] - wallMomentum));")),
     ("orderExpected", "temporal order", "reference",

@@ -9,9 +9,10 @@ Description
     mechanicalLaws::zoned): the point velocities from the cells' velocities
     (each cell's own density) and the points' mobilities from the
     impedances around them (compatible.H); the face loop in velocity with
-    the two sides' impedances is compatible.C's addFaceRatesOfMaterials
-    (it shares the face loop's inline functions).  One material takes the paths
-    of compatible.C, which do none of this arithmetic.
+    the two sides' impedances is compatibleFaceRates.C's
+    addFaceRatesOfMaterials (it shares the face loop's inline functions).
+    One material takes the paths of compatibleFaceRates.C, which do none of
+    this arithmetic.
 
 \*---------------------------------------------------------------------------*/
 
