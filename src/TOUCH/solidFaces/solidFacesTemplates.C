@@ -99,7 +99,7 @@ void Foam::solidFaces::forAllSolidPatches
     {
         const fvPatch& patch = mesh_.boundary()[patchi];
 
-        if (patch.coupled() || patch.size() == 0)
+        if (patch.coupled() || (patch.size() == 0 && !decide))
         {
             continue;
         }
@@ -122,12 +122,18 @@ void Foam::solidFaces::forAllSolidPatches
         solidFluxFvPatchVectorField& condition =
             refCast<solidFluxFvPatchVectorField>(lm_.boundaryFieldRef()[patchi]);
 
+        // A rank whose part of the patch is empty decides too: the decision
+        // may exchange across the ranks (a rigid wall's held points), and
+        // every rank must join that exchange
         if (decide)
         {
             condition.updateActiveSet(state);
         }
 
-        op(patch, condition, state, reference);
+        if (patch.size())
+        {
+            op(patch, condition, state, reference);
+        }
     }
 }
 
