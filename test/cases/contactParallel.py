@@ -14,6 +14,14 @@ digits so that equal numbers are equal doubles:
                 from the start, release at 2 ms, written every 0.5 ms;
                 and FUpdate compatible (the tutorial's default) with 1 x 1
                 across (40 cells, one face a patch);
+  sphereImpact  the ball on the rigid wall (-variant wall -n 4, touching
+                lowestFreePoint) to 5 us, written every 2.5 us, on metis 2
+                ranks, which leaves the wall's patch on one rank: the
+                other's empty part must still join the wall's exchange of
+                held points (it aborted in its first step before commit
+                02bac62).  Asserted at TOL_BALL: the runs part steadily
+                (lm 1.1e-12 at 5 us, 2.3e-11 at 10 us, 3e-4 at 30 us;
+                validation/sphereImpact/FINDINGS.md);
   slidingBlock  the block sliding on the rigid wall 'bottom' with Coulomb
                 friction (-n 4: 8 wall faces), serial to 0.35 s written
                 every 0.01 s; the parallel runs restart from its 0.32 s
@@ -104,6 +112,10 @@ MONITOR_GROUPS = (
 #: 2026-12-05), above acceptance 6's 1e-12 (validation/barCollision/
 #: FINDINGS.md); asserted at 3 times that
 TOL_CUT = 6e-11
+#: The ball on the wall: serial and parallel part steadily from the first
+#: contact (lm 1.1e-12 of its largest at 5 us, measured 2026-12-06):
+#: asserted at 3 times that
+TOL_BALL = 3.3e-12
 #: barCollision's mesh: cells a metre, cells across
 N_BARS = 20
 #: slidingBlock: the parallel runs start from the serial run's time
@@ -371,6 +383,36 @@ def block(root, problems):
                        worst[0], worst[1]))
 
 
+def ball(root, problems):
+    """sphereImpact -variant wall -n 4 to 10 us: serial, then metis on 2
+    ranks with a rank that has no face of the wall; the report."""
+    patches = ("contact1",)
+    serial = os.path.join(root, "ball", "serial")
+    os.makedirs(os.path.dirname(serial))
+    shutil.copytree(run.tutorial_dir("sphereImpact"), serial)
+    for key, value in cases.precise_output().items():
+        run.foam_set(serial, "system/controlDict", key, value)
+    run.foam_set(serial, "system/controlDict", "endTime", 5e-6)
+    run.foam_set(serial, "system/controlDict", "writeInterval", 2.5e-6)
+    run.run(["./Allrun", "-variant", "wall", "-n", "4"], serial,
+            name="Allrun", env=testing.without_pictures(),
+            timeout=testing.RUN_TIMEOUT)
+    base = os.path.join(root, "ball", "base")
+    shutil.copytree(serial, base, ignore=shutil.ignore_patterns(
+        "[1-9]*", "0.*", "postProcessing", "processor*", "log.*"))
+    case = os.path.join(root, "ball", "metis2")
+    nprocs = run_decomposed(base, case, plain_method("metis", 2))
+    counts = faces_per_processor(case, nprocs, patches)["contact1"]
+    if min(counts) > 0:
+        problems.append("ball metis2: the wall on every rank (%s): the"
+                        " empty part is not tested" % counts)
+    d = compare("ball metis2", case, serial, mesh.PolyMesh(serial).n_cells,
+                patches, 10.0, problems, TOL_BALL)
+    return ("sphereImpact wall -n 4 to 5 us, metis2 (wall faces per rank"
+            " %s): max rel diff %.1e (%s)"
+            % ("+".join(map(str, counts)), d[0], d[1]))
+
+
 def body():
     root = testing.work_dir(NAME)
     problems, lines = [], []
@@ -386,6 +428,7 @@ def body():
         ("apart2", manual(2), ()),
         ("cut2", manual(2), ("bar1End",)),
         ("cut3", manual(3), contact)], TOL_CUT, problems))
+    lines.append(ball(root, problems))
     lines.append(block(root, problems))
     return testing.verdict(lines, problems)
 
