@@ -87,8 +87,11 @@ TUTORIALS = {
     # is nearly unstressed, one colour by the physics
     "sphereImpact": (["-n", "2"], (800, 800), {
         "pressure": ["5us", "15us"]}),
+    # sigmaEq at 60 us (drawn too) is left out: at -n 2 the bodies, apart
+    # after the impact, carry stresses far below the range of the impact
+    # (two hue bins); the plastic strain stays, its 60 us picture is kept
     "projectileImpact": (["-n", "2"], (800, 800), {
-        "sigmaEq": ["5us", "15us", "60us"],
+        "sigmaEq": ["5us", "15us"],
         "epsilonP.plate": ["15us", "60us"]}),
 }
 #: tutorial: the plot its plot.py writes (made when matplotlib is installed)
