@@ -14,7 +14,7 @@ barRebound -n 2 (60 cells, to 400 us), twistingColumn -n 2 (48 cells, to
 0.3 s), elasticImpact -n 50, holedPlate -n 2 (gmsh), spinningCube -n 3,
 swingingCube -n 4, unstructuredCube -n 4, slidingBlock -n 4 (two cells across
 the height would colour its hydrostatic pressure in two hues), barCollision
--n 50, sphereImpact -n 2.  Asserted:
+-n 50, sphereImpact -n 2, projectileImpact -n 2.  Asserted:
   - no field a render.py asks for is missing from the case (the log has no
     'no cell field'), and every picture is there: taylorImpact pressure,
     sigmaEq and epsilonP at 10, 30, 50, 80 us, barRebound pressure at 30,
@@ -87,13 +87,20 @@ TUTORIALS = {
     # is nearly unstressed, one colour by the physics
     "sphereImpact": (["-n", "2"], (800, 800), {
         "pressure": ["5us", "15us"]}),
+    # sigmaEq at 60 us (drawn too) is left out: at -n 2 the bodies, apart
+    # after the impact, carry stresses far below the range of the impact
+    # (two hue bins); the plastic strain stays, its 60 us picture is kept
+    "projectileImpact": (["-n", "2"], (800, 800), {
+        "sigmaEq": ["5us", "15us"],
+        "epsilonP.plate": ["15us", "60us"]}),
 }
 #: tutorial: the plot its plot.py writes (made when matplotlib is installed)
 PLOTS = {"taylorImpact": "histories.png", "barRebound": "histories.png",
          "elasticImpact": "profiles.png", "holedPlate": "histories.png",
          "spinningCube": "histories.png", "swingingCube": "histories.png",
          "unstructuredCube": "histories.png", "slidingBlock": "histories.png",
-         "barCollision": "histories.png", "sphereImpact": "histories.png"}
+         "barCollision": "histories.png", "sphereImpact": "histories.png",
+         "projectileImpact": "histories.png"}
 LIMITS = {"coloured": 0.02, "hueBins": 3, "hueShare": 1e-3}
 #: hue bins (of 12) of the contact pictures' two colours
 RED, BLUE = 11, 7

@@ -57,6 +57,7 @@ TUTORIALS = {
     "slidingBlock": ["-n", "2"],
     "barCollision": ["-n", "10"],
     "sphereImpact": ["-n", "2"],
+    "projectileImpact": ["-n", "2"],
 }
 LIMITS = {"coloured": (0.005, 0.95), "hueBins": 3, "hueShare": 1e-3}
 

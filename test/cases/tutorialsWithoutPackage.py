@@ -18,8 +18,9 @@ spinningCube runs with -parallel 2 as well.  Asserted per tutorial:
     form at the cell centres (the tutorials' set-up) to 1e-12 of its largest value:
     rigid motion v_t + omega x X (spinningCube: v_t = (1 0.5 -0.25) m/s,
     omega = (4 6 8) rad/s), the twisting column's omega x X with
-    omega = (0, 105 sin(pi Y/12), 0), the impact velocities, and the
-    swinging cube's F = I + grad u(X, 0) with U = 0;
+    omega = (0, 105 sin(pi Y/12), 0), the impact velocities (the
+    projectile's ball at -50 m/s, its plate at rest), and the swinging
+    cube's F = I + grad u(X, 0) with U = 0;
   - the initial-velocity warning: elasticImpact's bar launched at its
     clamped wall gets it naming the patch 'wall', no other tutorial gets
     one (the twisting column's velocity vanishes at its clamped base only
@@ -53,6 +54,8 @@ TOLERANCE = 1e-12
 SWINGING = "swinging cube mode"
 #: the equal bars: +0.1 m/s on x < 0 (bar1), -0.1 m/s on x > 0 (bar2)
 BARS = "two bars at +-v"
+#: the projectile: the ball (y > 0) at -50 m/s along y, the plate at rest
+PROJECTILE = "ball onto a plate at rest"
 
 #: (tutorial, Allrun options, closed-form initial velocity or SWINGING,
 #:  pictures and plots that must be skipped)
@@ -72,6 +75,7 @@ TUTORIALS = [
     ("slidingBlock", ["-n", "2"], ((1.0, 0.0, 0.0), (0, 0, 0)), True),
     ("barCollision", ["-n", "10"], BARS, True),
     ("sphereImpact", ["-n", "2"], ((0.0, -10.0, 0.0), (0, 0, 0)), True),
+    ("projectileImpact", ["-n", "2"], PROJECTILE, True),
 ]
 
 
@@ -115,6 +119,10 @@ def closed_form(case, form, X):
     if form == BARS:
         U = np.zeros((len(X), 3))
         U[:, 0] = np.where(X[:, 0] < 0, 0.1, -0.1)
+        return U, None
+    if form == PROJECTILE:
+        U = np.zeros((len(X), 3))
+        U[:, 1] = np.where(X[:, 1] > 0, -50.0, 0.0)
         return U, None
     if form == "twist":
         return analytic.TwistingColumn(Omega=105.0, L=6.0).velocity(X), None

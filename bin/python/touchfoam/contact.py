@@ -5,7 +5,8 @@ postProcessing/contact/<startTime>/contact.dat holds, at the first
 Runge-Kutta stage of every step,
     # Time nFaces normalForce area maxPenetration mostTensileTraction
 (force and area summed over the face pairs), with friction also
-    maxFrictionRatio maxPairFrictionPower frictionPower.  The bars of barCollision:
+    maxFrictionRatio maxPairFrictionPower frictionPower maxPairFrictionRatio.
+The bars of barCollision:
 rho0 = 1400, E = 1.04e9, nu = 0.3 (c = 1000 m/s, Z = 1.4e6 Pa s/m), bar2's
 modulus E2 (system/meshOptions), lengths L1, L2, velocities v1, v2.
 """

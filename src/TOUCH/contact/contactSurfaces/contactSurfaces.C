@@ -97,6 +97,7 @@ Foam::contactSurfaces::contactSurfaces
     mostTensile_(-GREAT),
     friction_(false),
     frictionRatio_(0),
+    pairFrictionRatio_(0),
     pairFrictionPower_(-GREAT),
     matchChecked_(false)
 {
@@ -133,7 +134,7 @@ Foam::contactSurfaces::contactSurfaces
             << "# Time nFaces normalForce area maxPenetration"
             << " mostTensileTraction"
             << (friction_ ? " maxFrictionRatio maxPairFrictionPower"
-                " frictionPower" : "") << nl;
+                " frictionPower maxPairFrictionRatio" : "") << nl;
         file_().precision(12);
     }
 }
@@ -351,6 +352,8 @@ void Foam::contactSurfaces::update
                 const scalar pairPower = (tT & slip[i])*share;
                 frictionPower += pairPower;
                 pairFrictionPower_ = max(pairFrictionPower_, pairPower);
+                pairFrictionRatio_ =
+                    max(pairFrictionRatio_, mag(tT)/max(-tN, VSMALL));
                 f += tT;
             }
             f *= share;
@@ -465,6 +468,7 @@ void Foam::contactSurfaces::update
         if (friction_)
         {
             reduce(frictionRatio_, maxOp<scalar>());
+            reduce(pairFrictionRatio_, maxOp<scalar>());
             reduce(pairFrictionPower_, maxOp<scalar>());
             forAll(patches_, s)
             {
@@ -488,12 +492,13 @@ void Foam::contactSurfaces::update
                 file_()
                     << ' ' << frictionRatio_ << ' '
                     << (pairFrictionPower_ > -GREAT ? pairFrictionPower_ : 0)
-                    << ' ' << power;
+                    << ' ' << power << ' ' << pairFrictionRatio_;
             }
             file_() << endl;
         }
         mostTensile_ = -GREAT;
         frictionRatio_ = 0;
+        pairFrictionRatio_ = 0;
         pairFrictionPower_ = -GREAT;
     }
 }

@@ -1,0 +1,149 @@
+#!/usr/bin/python3
+"""A steel ball denting a free aluminium plate, both von Mises, with
+Coulomb friction mu = 0.2 between them (tutorials/projectileImpact,
+touchfoam.projectile), against the balances that hold whatever the mesh
+and simple independent estimates.
+
+    /usr/bin/python3 test/cases/projectileImpact.py
+
+A copy of the tutorial at -n 4 (1 184 cells, quarter model, FUpdate plain,
+50 m/s, to 60 us).  Asserted:
+  - the total p_y (no wall acts along y: the plate is free and the
+    symmetric planes push along x and z only) constant within
+    MOMENTUM_DRIFT of |p0| (measured 4.4e-15 on 2026-12-06);
+  - the energy never grows: kinetic + strain energy, and that sum with the
+    plastic and friction dissipation (what the bodies hold and what the
+    laws dissipated), by no more than 1e-12 E0 in any step;
+  - Coulomb's cone at every pair and step: the largest |t_t|/|t_n| of a
+    pair (contact.dat's maxPairFrictionRatio) <= mu (1 + 1e-12), and the
+    friction power of every pair <= 0; the friction dissipation > 0;
+  - the plastic dissipation at the end positive and within PLASTIC_BAND of
+    the energy estimate E0 - p_b^2/(2 m_b) - p_p^2/(2 M_p) (the energy the
+    bodies' rigid motions do not carry; it holds the plate's vibrations
+    and the scheme's dissipation too, so the plastic work falls below it:
+    measured 0.762 of it);
+  - the dent (the plate's top at the impact point below the plate's
+    centre of mass) within DENT_BAND of Tabor's rigid-plastic estimate
+    h = sqrt(W/(3 pi Y R)) (measured 1.03 of it; rough: hardening, rate
+    and bending are left out of the estimate, so the band is wide);
+  - the ball rebounds (p_y of the ball > 0 at the end), the contact is
+    released and never pulls (the most tensile contact traction <= 0);
+  - the penetration below PENETRATION of the smallest plate face (measured
+    0.114; the issue's 0.05 is not met on this mesh: today's level is
+    guarded, validation/projectileImpact/FINDINGS.md).
+Work folders: test/runs/projectileImpact/.
+"""
+
+import os
+import shutil
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "bin", "python"))
+
+from touchfoam import projectile, run, testing  # noqa: E402
+
+NAME = "projectileImpact"
+N = 4
+
+#: the total p_y drift allowed: 3 times the 4.4e-15 measured at -n 4 on
+#: 2026-12-06
+MOMENTUM_DRIFT = 1.5e-14
+
+#: plastic dissipation over the energy estimate (measured 0.762)
+PLASTIC_BAND = (0.5, 1.0)
+
+#: the dent over Tabor's estimate (measured 1.03)
+DENT_BAND = (0.5, 2.0)
+
+#: the largest penetration over the smallest plate face (measured 0.114)
+PENETRATION = 0.25
+
+
+def body():
+    root = testing.work_dir(NAME)
+    case = os.path.join(root, "n%d" % N)
+    if os.path.exists(case):
+        shutil.rmtree(case)
+    # No pictures or plots (tutorialPictures' business)
+    shutil.copytree(run.tutorial_dir(NAME), case,
+                    ignore=shutil.ignore_patterns("render.py", "plot.py"))
+    run.run(["./Allrun", "-n", str(N)], case, name="Allrun",
+            timeout=testing.RUN_TIMEOUT)
+    r = projectile.analyse(case)
+
+    failures = []
+    if not r["momentumDrift"] <= MOMENTUM_DRIFT:
+        failures.append("total p_y drifted by %.2e of |p0| (allowed %.1e)"
+                        % (r["momentumDrift"], MOMENTUM_DRIFT))
+    if not r["energyGrowth"] <= 1e-12:
+        failures.append("kinetic + strain energy grew by %.2e E0 in a step"
+                        % r["energyGrowth"])
+    if not r["accountedGrowth"] <= 1e-12:
+        failures.append("kinetic + strain + plastic + friction grew by "
+                        "%.2e E0 in a step" % r["accountedGrowth"])
+    mu = r["mu"]
+    if not mu > 0:
+        failures.append("the tutorial has no friction (mu %g)" % mu)
+    if "pairFrictionRatio" not in r:
+        failures.append("contact.dat has no maxPairFrictionRatio")
+    elif not r["pairFrictionRatio"] <= mu * (1 + 1e-12):
+        failures.append("|t_t|/|t_n| of a pair %.6f > mu %g"
+                        % (r["pairFrictionRatio"], mu))
+    if not r.get("pairFrictionPower", 1.0) <= 0:
+        failures.append("a pair's friction power %.3e > 0"
+                        % r.get("pairFrictionPower", float("nan")))
+    if not r["friction"] > 0:
+        failures.append("friction dissipation %.3e E0, not > 0"
+                        % r["friction"])
+    share = r["plastic"] / r["plasticEstimate"]
+    if not (r["plastic"] > 0
+            and PLASTIC_BAND[0] <= share <= PLASTIC_BAND[1]):
+        failures.append("plastic dissipation %.4f E0, %.3f of the estimate "
+                        "%.4f E0 (allowed %.2f to %.2f)"
+                        % (r["plastic"], share, r["plasticEstimate"],
+                           PLASTIC_BAND[0], PLASTIC_BAND[1]))
+    if r["dent"] is None:
+        failures.append("no pointD written: no dent")
+        dent = float("nan")
+    else:
+        dent = r["dent"] / r["dentEstimate"]
+        if not DENT_BAND[0] <= dent <= DENT_BAND[1]:
+            failures.append("dent %.3f mm, %.2f of Tabor's %.3f mm (allowed"
+                            " %.2f to %.2f)" % (1e3 * r["dent"], dent,
+                                                1e3 * r["dentEstimate"],
+                                                DENT_BAND[0], DENT_BAND[1]))
+    if not r["ballMomentum"] > 0:
+        failures.append("the ball does not rebound: p_y %.4f |p0|"
+                        % r["ballMomentum"])
+    if not r["released"]:
+        failures.append("the ball is still in contact at the end")
+    if not r["mostTensile"] <= 0:
+        failures.append("a contact pulled: %.3e Pa" % r["mostTensile"])
+    pen = r["penetration"] / r["faceSize"]
+    if not pen <= PENETRATION:
+        failures.append("penetration %.4f mm, %.3f of the smallest plate "
+                        "face (allowed %.2f)" % (1e3 * r["penetration"], pen,
+                                                 PENETRATION))
+
+    lines = [
+        "p_y drift %.1e |p0|; energy growth in a step %+.1e E0 (with the "
+        "dissipations %+.1e E0)" % (r["momentumDrift"], r["energyGrowth"],
+                                    r["accountedGrowth"]),
+        "|t_t|/|t_n| of a pair %.4f (mu %g), of a face %.4f; friction "
+        "dissipation %.4f E0" % (r.get("pairFrictionRatio", float("nan")),
+                                 mu, r.get("faceFrictionRatio",
+                                           float("nan")), r["friction"]),
+        "plastic dissipation %.4f E0 = %.3f of the estimate %.4f E0; dent "
+        "%.3f mm = %.2f of Tabor's %.3f mm" % (
+            r["plastic"], share, r["plasticEstimate"],
+            1e3 * (r["dent"] or float("nan")), dent,
+            1e3 * r["dentEstimate"]),
+        "ball %+.3f m/s at the end, penetration %.3f of the smallest plate "
+        "face" % (r["ballVelocity"], pen),
+    ]
+    return testing.verdict(lines, failures)
+
+
+if __name__ == "__main__":
+    sys.exit(testing.run_test(NAME, body))
