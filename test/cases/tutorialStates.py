@@ -123,7 +123,12 @@ def render(case):
             # Another Xvfb starting at the same moment takes the display
             # xvfb-run picked: wait before the next try
             time.sleep(2.0 * attempt)
-        out = subprocess.run(["xvfb-run", "-a", "pvbatch", "stateDriver.py"],
+        # The search for a free display starts at a number of this
+        # process's own (and of the attempt): two renderings starting at
+        # once otherwise race for the same one
+        display = str(100 + (os.getpid() % 800) * 4 + attempt)
+        out = subprocess.run(["xvfb-run", "-a", "-n", display, "pvbatch",
+                              "stateDriver.py"],
                              cwd=case, env=env, stdout=subprocess.PIPE,
                              stderr=subprocess.STDOUT,
                              universal_newlines=True,
