@@ -99,7 +99,23 @@ void Foam::solidFaces::forAllSolidPatches
     {
         const fvPatch& patch = mesh_.boundary()[patchi];
 
-        if (patch.coupled() || (patch.size() == 0 && !decide))
+        // An empty part of a patch whose condition decides contact takes
+        // part in the decision (below); other empty patches ('empty' of
+        // a 2D case, a condition without a decision) are left out
+        if
+        (
+            patch.coupled()
+         || (
+                patch.size() == 0
+             && !(
+                    decide
+                 && isA<solidFluxFvPatchVectorField>
+                    (
+                        lm_.boundaryField()[patchi]
+                    )
+                )
+            )
+        )
         {
             continue;
         }
