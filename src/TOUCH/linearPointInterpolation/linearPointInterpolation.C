@@ -9,24 +9,13 @@ License
 #include "syncTools.H"
 #include "compactAddressing.H"
 
-// * * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * //
-
-const Foam::Enum<Foam::linearPointInterpolation::limiting>
-Foam::linearPointInterpolation::limitingNames
-({
-    { limiting::none, "off" },
-    { limiting::cell, "cell" },
-    { limiting::point, "point" }
-});
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::linearPointInterpolation::linearPointInterpolation
 (
     const fvMesh& mesh,
     const linearReconstruction& reconstruction,
-    const limiting limit
+    const bool limited
 )
 :
     mesh_(mesh),
@@ -34,14 +23,11 @@ Foam::linearPointInterpolation::linearPointInterpolation
     inverseNPointCells_(mesh.nPoints(), Zero),
     cellWork_(),
     boundaryFaceWork_(mesh.nBoundaryFaces()),
-    limiting_(limit),
-    pointFactors_(),
-    pointMax_(),
-    pointMin_()
+    limited_(limited)
 {
     if
     (
-        limiting_ == limiting::cell
+        limited_
      && reconstruction_.schemeType()
      != linearReconstruction::scheme::limitedLinear
     )
@@ -72,8 +58,7 @@ void Foam::linearPointInterpolation::interpolate
 (
     const volVectorField& U,
     const scalar scale,
-    vectorField& pointValues,
-    const bool setFactors
+    vectorField& pointValues
 ) const
 {
     const labelUList& own = mesh_.owner();
@@ -125,17 +110,7 @@ void Foam::linearPointInterpolation::interpolate
         }
     }
 
-    if (limiting_ == limiting::point)
-    {
-        if (setFactors || pointFactors_.empty())
-        {
-            setPointFactors(Ui, grad);
-        }
-        extrapolatePointLimited(Ui, grad, scale, pointValues);
-        return;
-    }
-
-    if (limiting_ == limiting::cell)
+    if (limited_)
     {
         // The reconstruction's limiter of each component of p, on the
         // column of the gradient that carries it
@@ -164,17 +139,11 @@ void Foam::linearPointInterpolation::interpolateMomentum
 {
     const linearReconstruction::scheme scheme = reconstruction_.schemeType();
     const bool limitedAlike =
-        (limiting_ == limiting::cell)
-     == (scheme == linearReconstruction::scheme::limitedLinear);
+        limited_ == (scheme == linearReconstruction::scheme::limitedLinear);
 
-    if
-    (
-        scheme == linearReconstruction::scheme::firstOrder
-     || !limitedAlike
-     || limiting_ == limiting::point
-    )
+    if (scheme == linearReconstruction::scheme::firstOrder || !limitedAlike)
     {
-        interpolate(p, scale, pointValues, true);
+        interpolate(p, scale, pointValues);
         return;
     }
 
@@ -223,143 +192,6 @@ void Foam::linearPointInterpolation::extrapolate
 }
 
 
-void Foam::linearPointInterpolation::setPointFactors
-(
-    const vectorField& Ui,
-    const tensorField& grad
-) const
-{
-    const pointField& points = mesh_.points();
-    const vectorField& X = reconstruction_.X();
-    const compactAddressing::rows& cellPoints =
-        compactAddressing::New(mesh_).cellPoints();
-
-    // The bounds at each point: its cells, their reflections across a
-    // mirror it lies on, and the cells of the other ranks
-    pointMax_.setSize(mesh_.nPoints());
-    pointMin_.setSize(mesh_.nPoints());
-    pointMax_ = vector::uniform(-GREAT);
-    pointMin_ = vector::uniform(GREAT);
-
-    scalar largest = 0;
-    for (label celli = 0; celli < cellPoints.size(); ++celli)
-    {
-        const vector& U = Ui[celli];
-        largest = max(largest, cmptMax(cmptMag(U)));
-        for (const label pointi : cellPoints[celli])
-        {
-            pointMax_[pointi] = max(pointMax_[pointi], U);
-            pointMin_[pointi] = min(pointMin_[pointi], U);
-        }
-    }
-
-    forAll(mesh_.boundary(), patchi)
-    {
-        if (!reconstruction_.mirror(patchi))
-        {
-            continue;
-        }
-        const polyPatch& pp = mesh_.boundaryMesh()[patchi];
-        const labelUList& faceCells = pp.faceCells();
-        forAll(pp, i)
-        {
-            const vector& U = Ui[faceCells[i]];
-            const vector reflected(U + reconstruction_.mirrorJump(patchi, i, U));
-            for (const label pointi : pp[i])
-            {
-                pointMax_[pointi] = max(pointMax_[pointi], reflected);
-                pointMin_[pointi] = min(pointMin_[pointi], reflected);
-            }
-        }
-    }
-
-    syncTools::syncPointList
-    (
-        mesh_, pointMax_, maxEqOp<vector>(), vector::uniform(-GREAT)
-    );
-    syncTools::syncPointList
-    (
-        mesh_, pointMin_, minEqOp<vector>(), vector::uniform(GREAT)
-    );
-
-    // Overshoots below round-off of the field's largest value are left:
-    // clipping noise would make the map depend on it
-    reduce(largest, maxOp<scalar>());
-    const scalar tolerance = 1e-12*largest;
-
-    pointFactors_.setSize(compactAddressing::New(mesh_).cellPoints().nEntries());
-
-    for (label celli = 0; celli < cellPoints.size(); ++celli)
-    {
-        const vector& U = Ui[celli];
-        label entry = cellPoints.start(celli);
-        for (const label pointi : cellPoints[celli])
-        {
-            const vector delta((points[pointi] - X[celli]) & grad[celli]);
-            vector& factor = pointFactors_[entry++];
-            for (direction d = 0; d < vector::nComponents; ++d)
-            {
-                const scalar up = pointMax_[pointi][d] - U[d];
-                const scalar down = pointMin_[pointi][d] - U[d];
-                if (delta[d] > up + tolerance)
-                {
-                    factor[d] = max(up, scalar(0))/delta[d];
-                }
-                else if (delta[d] < down - tolerance)
-                {
-                    factor[d] = min(down, scalar(0))/delta[d];
-                }
-                else
-                {
-                    factor[d] = 1;
-                }
-            }
-        }
-    }
-}
-
-
-void Foam::linearPointInterpolation::extrapolatePointLimited
-(
-    const vectorField& Ui,
-    const tensorField& grad,
-    const scalar scale,
-    vectorField& pointValues
-) const
-{
-    const pointField& points = mesh_.points();
-    const vectorField& X = reconstruction_.X();
-    const compactAddressing::rows& cellPoints =
-        compactAddressing::New(mesh_).cellPoints();
-
-    pointValues = Zero;
-    for (label celli = 0; celli < cellPoints.size(); ++celli)
-    {
-        label entry = cellPoints.start(celli);
-        for (const label pointi : cellPoints[celli])
-        {
-            pointValues[pointi] +=
-                Ui[celli]
-              + cmptMultiply
-                (
-                    pointFactors_[entry++],
-                    (points[pointi] - X[celli]) & grad[celli]
-                );
-        }
-    }
-
-    syncTools::syncPointList
-    (
-        mesh_, pointValues, plusEqOp<vector>(), vector::zero
-    );
-
-    forAll(pointValues, pointi)
-    {
-        pointValues[pointi] *= scale*inverseNPointCells_[pointi];
-    }
-}
-
-
 void Foam::linearPointInterpolation::addTranspose
 (
     const vectorField& pointValues,
@@ -389,25 +221,17 @@ void Foam::linearPointInterpolation::addTranspose
         // of its gradient
         vector sum(Zero);
         tensor H(Zero);
-        const bool pointLimited = limiting_ == limiting::point;
-        label entry = cellPoints.start(celli);
         for (const label pointi : cellPoints[celli])
         {
             // The point's share f_a/n_a
             const vector share(inverseN[pointi]*pointValues[pointi]);
             sum += share;
-            H +=
-                (
-                    pointLimited
-                  ? vector(cmptMultiply(share, pointFactors_[entry++]))
-                  : share
-                )
-               *(points[pointi] - X[celli]);
+            H += share*(points[pointi] - X[celli]);
         }
         cellValues[celli] += sum;
 
         // Row d of the dual is component d's
-        if (limiting_ == limiting::cell)
+        if (limited_)
         {
             const vector& phi = reconstruction_.momentumLimiter()[celli];
             H = tensor(phi.x()*H.x(), phi.y()*H.y(), phi.z()*H.z());

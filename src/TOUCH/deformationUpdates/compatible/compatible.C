@@ -72,39 +72,13 @@ namespace Foam
         "-", 1, entryLimits::above(0, true)
     );
 
-    static const declaredEntry<word> pointLimiterEntry
+    static const declaredEntry<Switch> pointLimiterEntry
     (
         "system/fvSolution TOUCH/compatibleCoeffs", "pointLimiter",
-        "limited extrapolation of the point velocities: by the cells'"
-        " momentum limiter (cell, also 'on'), per point and cell (point)"
-        " or not (off); default cell with reconstruction limitedLinear,"
-        " else off",
-        "-", word("off"), entryLimits::oneOf({"cell", "point", "off", "on"})
+        "limited extrapolation of the point velocities"
+        " (default: on with reconstruction limitedLinear, else off)",
+        "-", Switch(Switch::OFF)
     );
-
-
-    //- The point map's limiting the coefficients ask for
-    Foam::linearPointInterpolation::limiting readPointLimiting
-    (
-        const Foam::dictionary& coeffs,
-        const Foam::linearReconstruction& reconstruction
-    )
-    {
-        using limiting = Foam::linearPointInterpolation::limiting;
-        if (!coeffs.found(pointLimiterEntry.name()))
-        {
-            return
-                reconstruction.schemeType()
-             == Foam::linearReconstruction::scheme::limitedLinear
-              ? limiting::cell
-              : limiting::none;
-        }
-        const Foam::word name(pointLimiterEntry.read(coeffs));
-        return
-            name == "on"
-          ? limiting::cell
-          : Foam::linearPointInterpolation::limitingNames[name];
-    }
 }
 
 
@@ -163,7 +137,13 @@ Foam::deformationUpdates::compatible::compatible
     (
         faces.mesh(),
         reconstruction,
-        readPointLimiting(coeffs, reconstruction)
+        coeffs.found(pointLimiterEntry.name())
+      ? pointLimiterEntry.read(coeffs)
+      : Switch
+        (
+            reconstruction.schemeType()
+         == linearReconstruction::scheme::limitedLinear
+        )
     ),
     constraints_(faces.mesh()),
     faceFree_(faces.mesh().boundary().size()),
@@ -232,11 +212,7 @@ void Foam::deformationUpdates::compatible::writeOptions(Ostream& os) const
         << (quadraticShare_ ? "quadratic" : "linear") << ", "
         << pointUpwindingEntry.name() << ' ' << pointUpwinding_ << ", "
         << pointLimiterEntry.name() << ' '
-        << linearPointInterpolation::limitingNames
-           [
-               pointInterpolation_.limit()
-           ]
-        << ')';
+        << (pointInterpolation_.limited() ? "on" : "off") << ')';
 }
 
 

@@ -50,7 +50,7 @@ void Foam::deformationUpdates::compatible::interpolateVelocity
     v.primitiveFieldRef() = lm.primitiveField()/law_.cellRho();
     v.correctBoundaryConditions();
 
-    pointInterpolation_.interpolate(v, 1, pointV, true);
+    pointInterpolation_.interpolate(v, 1, pointV);
 }
 
 
