@@ -90,27 +90,47 @@ Foam::vector Foam::rigidWallFvPatchVectorField::wallPoint
 }
 
 
-Foam::tmp<Foam::scalarField> Foam::rigidWallFvPatchVectorField::lowestFreeGaps
+Foam::tmp<Foam::scalarField> Foam::rigidWallFvPatchVectorField::pointGaps
 (
     const vector& wallPoint
 ) const
 {
     const polyMesh& mesh = patch().boundaryMesh().mesh();
     const labelList& meshPoints = patch().patch().meshPoints();
-    const faceList& localFaces = patch().patch().localFaces();
 
     // The points' displacement is the solver's pointD
     const word pointDName("pointD");
     if (!db().foundObject<pointVectorField>(pointDName))
     {
         FatalErrorInFunction
-            << "Patch " << patch().name() << ": 'touching lowestFreePoint'"
-            << " needs the point displacement field " << pointDName
+            << "Patch " << patch().name() << ": the rigid wall's gaps"
+            << " need the point displacement field " << pointDName
             << " (touchFoam's)" << exit(FatalError);
     }
     const vectorField& pointU =
         db().lookupObject<pointVectorField>(pointDName).primitiveField();
     const pointField& X = mesh.points();
+
+    tmp<scalarField> tgaps(new scalarField(meshPoints.size()));
+    scalarField& gaps = tgaps.ref();
+    forAll(meshPoints, pointj)
+    {
+        const label pointi = meshPoints[pointj];
+        gaps[pointj] = ((X[pointi] + pointU[pointi]) - wallPoint) & normal_;
+    }
+
+    return tgaps;
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::rigidWallFvPatchVectorField::lowestFreeGaps
+(
+    const scalarField& pointGap
+) const
+{
+    const polyMesh& mesh = patch().boundaryMesh().mesh();
+    const labelList& meshPoints = patch().patch().meshPoints();
+    const faceList& localFaces = patch().patch().localFaces();
 
     // The points some face in contact holds, on any rank
     boolList held(meshPoints.size(), false);
@@ -134,12 +154,7 @@ Foam::tmp<Foam::scalarField> Foam::rigidWallFvPatchVectorField::lowestFreeGaps
         {
             if (!held[pointj])
             {
-                const label pointi = meshPoints[pointj];
-                gaps[facei] = min
-                (
-                    gaps[facei],
-                    ((X[pointi] + pointU[pointi]) - wallPoint) & normal_
-                );
+                gaps[facei] = min(gaps[facei], pointGap[pointj]);
             }
         }
     }
@@ -228,10 +243,11 @@ void Foam::rigidWallFvPatchVectorField::updateActiveSet
     ++nStages_;
     stageForce_ = Zero;
 
+    pointGap_ = pointGaps(wallPoint);
     const scalarField lowest
     (
         lowestFreePoint_
-      ? lowestFreeGaps(wallPoint)
+      ? lowestFreeGaps(pointGap_)
       : tmp<scalarField>(new scalarField())
     );
 
@@ -286,6 +302,56 @@ void Foam::rigidWallFvPatchVectorField::correctStageForce
 {
     stepForce_ += force - stageForce_;
     stageForce_ = force;
+}
+
+
+Foam::tmp<Foam::vectorField>
+Foam::rigidWallFvPatchVectorField::pointOffsets() const
+{
+    const polyMesh& mesh = patch().boundaryMesh().mesh();
+    const labelList& meshPoints = patch().patch().meshPoints();
+    const faceList& localFaces = patch().patch().localFaces();
+
+    // A face enters contact when the mean of its points (or its lowest
+    // free point) reaches the wall, and holds every point of it at the
+    // wall's normal velocity from then on: the points still above the
+    // wall would hover there for the rest of the contact (the Taylor bar
+    // at -n 4 up to 0.046 of the wall layer's height,
+    // validation/ringImpact/FINDINGS.md 7).  Their offset onto the wall
+    // lets the update bring them there.  A point within the touching
+    // tolerance is on the wall (a flat face that touches, as a bar's
+    // end, is left as it was)
+    const scalarField& magSf = patch().magSf();
+    tmp<vectorField> toffsets(new vectorField(meshPoints.size(), Zero));
+    vectorField& offsets = toffsets.ref();
+    if (pointGap_.size() == meshPoints.size())
+    {
+        forAll(contact_, facei)
+        {
+            if (contact_[facei])
+            {
+                const scalar tolerance =
+                    touchingTolerance*sqrt(magSf[facei]);
+                for (const label pointj : localFaces[facei])
+                {
+                    if (pointGap_[pointj] > tolerance)
+                    {
+                        offsets[pointj] = -pointGap_[pointj]*normal_;
+                    }
+                }
+            }
+        }
+    }
+
+    // A point whose faces in contact are on another rank: the same offset
+    // on every rank (the gaps are the same; a point held on no rank has
+    // none)
+    syncTools::syncPointList
+    (
+        mesh, meshPoints, offsets, maxMagSqrEqOp<vector>(), vector::zero
+    );
+
+    return toffsets;
 }
 
 
