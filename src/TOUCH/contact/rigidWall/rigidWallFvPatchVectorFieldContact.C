@@ -320,7 +320,27 @@ Foam::rigidWallFvPatchVectorField::pointOffsets() const
     // validation/ringImpact/FINDINGS.md 7).  Their offset onto the wall
     // lets the update bring them there.  A point within the touching
     // tolerance is on the wall (a flat face that touches, as a bar's
-    // end, is left as it was)
+    // end, is left as it was).  Only inside the contact: a point of a
+    // face out of contact is at its edge, where a curved body leaves the wall; brought down there,
+    // a ring's last faces (touched inclined, half into the wall) kept
+    // their mean in the wall after their release and touched again with
+    // vanishing force for 1 ms (ringReference -n 96)
+    boolList inside(meshPoints.size(), true);
+    forAll(contact_, facei)
+    {
+        if (!contact_[facei])
+        {
+            for (const label pointj : localFaces[facei])
+            {
+                inside[pointj] = false;
+            }
+        }
+    }
+    syncTools::syncPointList
+    (
+        mesh, meshPoints, inside, andEqOp<bool>(), true
+    );
+
     const scalarField& magSf = patch().magSf();
     tmp<vectorField> toffsets(new vectorField(meshPoints.size(), Zero));
     vectorField& offsets = toffsets.ref();
@@ -334,7 +354,7 @@ Foam::rigidWallFvPatchVectorField::pointOffsets() const
                     touchingTolerance*sqrt(magSf[facei]);
                 for (const label pointj : localFaces[facei])
                 {
-                    if (pointGap_[pointj] > tolerance)
+                    if (inside[pointj] && pointGap_[pointj] > tolerance)
                     {
                         offsets[pointj] = -pointGap_[pointj]*normal_;
                     }
