@@ -350,13 +350,33 @@ Foam::rigidWallFvPatchVectorField::pointOffsets() const
         {
             if (contact_[facei])
             {
+                // The face's warp: how far a point lies above the lower
+                // of the face's lowest point and the wall.  A face held
+                // above the wall as a whole (touched at a stage's
+                // predictor: a bar's end, up to |v| dt) is the entry's
+                // error, left as its penetration is; closed, it moved a
+                // bar hit by a moving wall off the fixed wall's bounce by
+                // round-off of the gap, grown to 1e-9 (rigidWallBounce)
+                scalar lowest = GREAT;
+                for (const label pointj : localFaces[facei])
+                {
+                    lowest = min(lowest, pointGap_[pointj]);
+                }
+                const scalar floor = max(lowest, scalar(0));
                 const scalar tolerance =
                     touchingTolerance*sqrt(magSf[facei]);
                 for (const label pointj : localFaces[facei])
                 {
-                    if (inside[pointj] && pointGap_[pointj] > tolerance)
+                    const scalar warp = pointGap_[pointj] - floor;
+                    if
+                    (
+                        inside[pointj]
+                     && warp > tolerance
+                     && pointGap_[pointj] > tolerance
+                     && warp > mag(offsets[pointj])
+                    )
                     {
-                        offsets[pointj] = -pointGap_[pointj]*normal_;
+                        offsets[pointj] = -warp*normal_;
                     }
                 }
             }
