@@ -90,47 +90,27 @@ Foam::vector Foam::rigidWallFvPatchVectorField::wallPoint
 }
 
 
-Foam::tmp<Foam::scalarField> Foam::rigidWallFvPatchVectorField::pointGaps
+Foam::tmp<Foam::scalarField> Foam::rigidWallFvPatchVectorField::lowestFreeGaps
 (
     const vector& wallPoint
 ) const
 {
     const polyMesh& mesh = patch().boundaryMesh().mesh();
     const labelList& meshPoints = patch().patch().meshPoints();
+    const faceList& localFaces = patch().patch().localFaces();
 
     // The points' displacement is the solver's pointD
     const word pointDName("pointD");
     if (!db().foundObject<pointVectorField>(pointDName))
     {
         FatalErrorInFunction
-            << "Patch " << patch().name() << ": the rigid wall's gaps"
-            << " need the point displacement field " << pointDName
+            << "Patch " << patch().name() << ": 'touching lowestFreePoint'"
+            << " needs the point displacement field " << pointDName
             << " (touchFoam's)" << exit(FatalError);
     }
     const vectorField& pointU =
         db().lookupObject<pointVectorField>(pointDName).primitiveField();
     const pointField& X = mesh.points();
-
-    tmp<scalarField> tgaps(new scalarField(meshPoints.size()));
-    scalarField& gaps = tgaps.ref();
-    forAll(meshPoints, pointj)
-    {
-        const label pointi = meshPoints[pointj];
-        gaps[pointj] = ((X[pointi] + pointU[pointi]) - wallPoint) & normal_;
-    }
-
-    return tgaps;
-}
-
-
-Foam::tmp<Foam::scalarField> Foam::rigidWallFvPatchVectorField::lowestFreeGaps
-(
-    const scalarField& pointGap
-) const
-{
-    const polyMesh& mesh = patch().boundaryMesh().mesh();
-    const labelList& meshPoints = patch().patch().meshPoints();
-    const faceList& localFaces = patch().patch().localFaces();
 
     // The points some face in contact holds, on any rank
     boolList held(meshPoints.size(), false);
@@ -154,7 +134,12 @@ Foam::tmp<Foam::scalarField> Foam::rigidWallFvPatchVectorField::lowestFreeGaps
         {
             if (!held[pointj])
             {
-                gaps[facei] = min(gaps[facei], pointGap[pointj]);
+                const label pointi = meshPoints[pointj];
+                gaps[facei] = min
+                (
+                    gaps[facei],
+                    ((X[pointi] + pointU[pointi]) - wallPoint) & normal_
+                );
             }
         }
     }
@@ -243,11 +228,10 @@ void Foam::rigidWallFvPatchVectorField::updateActiveSet
     ++nStages_;
     stageForce_ = Zero;
 
-    pointGap_ = pointGaps(wallPoint);
     const scalarField lowest
     (
         lowestFreePoint_
-      ? lowestFreeGaps(pointGap_)
+      ? lowestFreeGaps(wallPoint)
       : tmp<scalarField>(new scalarField())
     );
 
@@ -302,96 +286,6 @@ void Foam::rigidWallFvPatchVectorField::correctStageForce
 {
     stepForce_ += force - stageForce_;
     stageForce_ = force;
-}
-
-
-Foam::tmp<Foam::vectorField>
-Foam::rigidWallFvPatchVectorField::pointOffsets() const
-{
-    const polyMesh& mesh = patch().boundaryMesh().mesh();
-    const labelList& meshPoints = patch().patch().meshPoints();
-    const faceList& localFaces = patch().patch().localFaces();
-
-    // A face enters contact when the mean of its points (or its lowest
-    // free point) reaches the wall, and holds every point of it at the
-    // wall's normal velocity from then on: the points still above the
-    // wall would hover there for the rest of the contact (the Taylor bar
-    // at -n 4 up to 0.046 of the wall layer's height,
-    // validation/ringImpact/FINDINGS.md 7).  Their offset onto the wall
-    // lets the update bring them there.  A point within the touching
-    // tolerance is on the wall (a flat face that touches, as a bar's
-    // end, is left as it was).  Only inside the contact: a point of a
-    // face out of contact is at its edge, where a curved body leaves the wall; brought down there,
-    // a ring's last faces (touched inclined, half into the wall) kept
-    // their mean in the wall after their release and touched again with
-    // vanishing force for 1 ms (ringReference -n 96)
-    boolList inside(meshPoints.size(), true);
-    forAll(contact_, facei)
-    {
-        if (!contact_[facei])
-        {
-            for (const label pointj : localFaces[facei])
-            {
-                inside[pointj] = false;
-            }
-        }
-    }
-    syncTools::syncPointList
-    (
-        mesh, meshPoints, inside, andEqOp<bool>(), true
-    );
-
-    const scalarField& magSf = patch().magSf();
-    tmp<vectorField> toffsets(new vectorField(meshPoints.size(), Zero));
-    vectorField& offsets = toffsets.ref();
-    if (pointGap_.size() == meshPoints.size())
-    {
-        forAll(contact_, facei)
-        {
-            if (contact_[facei])
-            {
-                // The face's warp: how far a point lies above the lower
-                // of the face's lowest point and the wall.  A face held
-                // above the wall as a whole (touched at a stage's
-                // predictor: a bar's end, up to |v| dt) is the entry's
-                // error, left as its penetration is; closed, it moved a
-                // bar hit by a moving wall off the fixed wall's bounce by
-                // round-off of the gap, grown to 1e-9 (rigidWallBounce)
-                scalar lowest = GREAT;
-                for (const label pointj : localFaces[facei])
-                {
-                    lowest = min(lowest, pointGap_[pointj]);
-                }
-                const scalar floor = max(lowest, scalar(0));
-                const scalar tolerance =
-                    touchingTolerance*sqrt(magSf[facei]);
-                for (const label pointj : localFaces[facei])
-                {
-                    const scalar warp = pointGap_[pointj] - floor;
-                    if
-                    (
-                        inside[pointj]
-                     && warp > tolerance
-                     && pointGap_[pointj] > tolerance
-                     && warp > mag(offsets[pointj])
-                    )
-                    {
-                        offsets[pointj] = -warp*normal_;
-                    }
-                }
-            }
-        }
-    }
-
-    // A point whose faces in contact are on another rank: the same offset
-    // on every rank (the gaps are the same; a point held on no rank has
-    // none)
-    syncTools::syncPointList
-    (
-        mesh, meshPoints, offsets, maxMagSqrEqOp<vector>(), vector::zero
-    );
-
-    return toffsets;
 }
 
 

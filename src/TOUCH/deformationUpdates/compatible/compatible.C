@@ -290,10 +290,6 @@ void Foam::deformationUpdates::compatible::rates
         addDriftRotation(pointV);
     }
 
-    // Held points off a rigid wall come onto it (after the last
-    // constraint: its projector would take the motion out again)
-    closeWallGaps(pointV);
-
     // F follows the point motion alone (no upwind part: see the header)
     addFaceMeanFRate(pointV, FRate);
 
