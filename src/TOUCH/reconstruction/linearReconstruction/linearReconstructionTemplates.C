@@ -96,19 +96,26 @@ void Foam::linearReconstruction::updateCells
     // that is zero but for round-off (p_x of a ring falling along y) had a
     // tolerance of round-off itself, and its limiter followed the round-off
     // of each decomposition (serial and parallel parted at first contact)
-    // and of each step sequence (the ring's L_z grew to 2e-7)
+    // and of each step sequence (the ring's L_z grew to 2e-7).  For p the
+    // largest range of a component over the mesh, not the largest |p|: a
+    // uniform drift changes no increment, and so no limiter factor
+    // (Galilean invariance, test slidingWallInvariance)
     scalar pTolerance = 0;
     scalar PTolerance = 0;
     if (limited)
     {
+        vector pMax(vector::uniform(-GREAT));
+        vector pMin(vector::uniform(GREAT));
         forAll(pi, c)
         {
-            pTolerance = max(pTolerance, magSqr(pi[c]));
+            pMax = max(pMax, pi[c]);
+            pMin = min(pMin, pi[c]);
             PTolerance = max(PTolerance, magSqr(Pi[c]));
         }
-        reduce(pTolerance, maxOp<scalar>());
+        reduce(pMax, maxOp<vector>());
+        reduce(pMin, minOp<vector>());
         reduce(PTolerance, maxOp<scalar>());
-        pTolerance = roundOff_*Foam::sqrt(pTolerance);
+        pTolerance = roundOff_*max(cmptMax(pMax - pMin), scalar(0));
         PTolerance = roundOff_*Foam::sqrt(PTolerance);
     }
     const packedMomentumStress tolerance
