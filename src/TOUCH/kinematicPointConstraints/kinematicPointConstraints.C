@@ -14,19 +14,6 @@ License
 namespace Foam
 {
 
-//- Combine the prescribed velocities of a point's faces: the larger
-struct prescribeEqOp
-{
-    void operator()(vector& x, const vector& y) const
-    {
-        if (magSqr(y) > magSqr(x))
-        {
-            x = y;
-        }
-    }
-};
-
-
 //- Whether two declarations are the same to the last bit (OpenFOAM's
 //  operator== on a VectorSpace allows a difference of VSMALL)
 template<class Type>
@@ -88,6 +75,21 @@ void Foam::kinematicPointConstraints::formProjectors()
     // velocities meet, the velocity that meets all of them (below)
     vectorField fixedVelocitySum(boundaryPoints_.size(), Zero);
 
+    // The same of the faces of smooth surfaces (a contact between
+    // bodies), apart, and their largest velocity: combined per point once
+    // complete (combineSurfaces)
+    tensorField surfaceSum;
+    vectorField surfaceVelocitySum;
+    vectorField surfaceLargest;
+    const bool anySurface =
+        returnReduce(surface_.found(true), orOp<bool>());
+    if (anySurface)
+    {
+        surfaceSum.setSize(boundaryPoints_.size(), Zero);
+        surfaceVelocitySum.setSize(boundaryPoints_.size(), Zero);
+        surfaceLargest.setSize(boundaryPoints_.size(), Zero);
+    }
+
     const faceList& faces = mesh_.faces();
 
     forAll(declaredFree_, patchi)
@@ -100,6 +102,23 @@ void Foam::kinematicPointConstraints::formProjectors()
         const label start = mesh_.boundary()[patchi].start();
         const tensorField& free = declaredFree_[patchi];
         const vectorField& velocity = declaredVelocity_[patchi];
+
+        if (surface_[patchi])
+        {
+            forAll(free, i)
+            {
+                const tensor fixed(tensor::I - free[i]);
+
+                for (const label pointi : faces[start + i])
+                {
+                    const label b = boundaryIndex_[pointi];
+                    surfaceSum[b] += fixed;
+                    surfaceVelocitySum[b] += fixed & velocity[i];
+                    prescribeEqOp()(surfaceLargest[b], velocity[i]);
+                }
+            }
+            continue;
+        }
 
         forAll(free, i)
         {
@@ -128,6 +147,14 @@ void Foam::kinematicPointConstraints::formProjectors()
         mesh_, boundaryPoints_, fixedVelocitySum, plusEqOp<vector>(),
         vector::zero
     );
+
+    if (anySurface)
+    {
+        combineSurfaces
+        (
+            surfaceSum, surfaceVelocitySum, surfaceLargest, fixedVelocitySum
+        );
+    }
 
     // The largest velocity serves where it meets every face's fixed
     // directions (a wall, a plane, contact faces of one normal and
@@ -192,6 +219,7 @@ Foam::kinematicPointConstraints::kinematicPointConstraints(const fvMesh& mesh)
     declaredVelocity_(mesh.boundary().size()),
     declaredNow_(mesh.boundary().size(), false),
     permanent_(mesh.boundary().size(), false),
+    surface_(mesh.boundary().size(), false),
     changed_(false),
     nActive_(0),
     activeIndex_(mesh.nPoints(), -1)
@@ -275,11 +303,17 @@ void Foam::kinematicPointConstraints::add
 (
     const fvPatch& patch,
     const tensorField& free,
-    const vectorField& velocity
+    const vectorField& velocity,
+    const bool surface
 )
 {
     const label patchi = patch.index();
     declaredNow_[patchi] = true;
+    if (surface != surface_[patchi])
+    {
+        surface_[patchi] = surface;
+        changed_ = true;
+    }
 
     if (!declaredFree_.set(patchi))
     {

@@ -105,6 +105,7 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     touching_(p.size(), false),
     normal_(p.size(), Zero),
     contactVelocity_(p.size(), Zero),
+    nodalForce_(p.size(), Zero),
     stageForce_(Zero),
     pointConstrained_(false)
 {}
@@ -139,6 +140,7 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     touching_(p.size(), false),
     normal_(p.size(), Zero),
     contactVelocity_(p.size(), Zero),
+    nodalForce_(p.size(), Zero),
     stageForce_(Zero),
     pointConstrained_(false)
 {}
@@ -168,6 +170,7 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     touching_(p.size(), false),
     normal_(p.size(), Zero),
     contactVelocity_(p.size(), Zero),
+    nodalForce_(p.size(), Zero),
     stageForce_(Zero),
     pointConstrained_(false)
 {
@@ -200,6 +203,7 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     touching_(ptf.touching_),
     normal_(ptf.normal_),
     contactVelocity_(ptf.contactVelocity_),
+    nodalForce_(ptf.nodalForce_),
     stageForce_(ptf.stageForce_),
     pointConstrained_(ptf.pointConstrained_)
 {}
@@ -222,6 +226,7 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     touching_(ptf.touching_),
     normal_(ptf.normal_),
     contactVelocity_(ptf.contactVelocity_),
+    nodalForce_(ptf.nodalForce_),
     stageForce_(ptf.stageForce_),
     pointConstrained_(ptf.pointConstrained_)
 {}
@@ -351,6 +356,8 @@ void Foam::bodyContactFvPatchVectorField::autoMap(const fvPatchFieldMapper& m)
     normal_ = Zero;
     contactVelocity_.setSize(contact.size());
     contactVelocity_ = Zero;
+    nodalForce_.setSize(contact.size());
+    nodalForce_ = Zero;
     moment_.setSize(contact.size());
     moment_ = Zero;
     if (!friction_->frictionless())

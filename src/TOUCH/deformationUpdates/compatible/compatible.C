@@ -239,6 +239,7 @@ void Foam::deformationUpdates::compatible::rates
     // The nodal forces are the stresses' alone: complete before the
     // conditions, so that a wall can be released on its reaction to them
     completeNodalForces();
+    setContactNodalForces();
 
     const bool tally = upwindLoss_.valid() && stage == 1;
     if (tally)

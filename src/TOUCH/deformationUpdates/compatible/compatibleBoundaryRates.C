@@ -72,7 +72,12 @@ void Foam::deformationUpdates::compatible::addBoundaryRate
             (
                 reference, faceFree_[patchi], faceVelocity_[patchi]
             );
-            constraints_.add(patch, free, faceVelocity_[patchi]);
+            // (a contact surface's facets at a point combined into its
+            // normal: kinematicPointConstraints::surfaceFixed)
+            constraints_.add
+            (
+                patch, free, faceVelocity_[patchi], condition.contactSurface()
+            );
 
             // The fixed directions are damped towards the prescribed
             // momentum with the share of the cell's departure from it that

@@ -261,6 +261,18 @@ void Foam::deformationUpdates::compatible::reportWallForces
             mesh, meshPoints, ownSum, plusEqOp<tensor>(), tensor::zero
         );
 
+        // The facets of a contact surface held along their normal alone,
+        // as the constraint combined them (kinematicPointConstraints)
+        if (condition.contactSurface())
+        {
+            vector e;
+            forAll(ownSum, j)
+            {
+                ownSum[j] =
+                    kinematicPointConstraints::surfaceFixed(ownSum[j], e);
+            }
+        }
+
         // The wall's part of the constraint's reaction at those points,
         // each rank its share
         vector reaction(Zero);
@@ -294,6 +306,58 @@ void Foam::deformationUpdates::compatible::reportWallForces
         (
             (patch.size() ? faceForce_[patchi] : vector(Zero)) + reaction
         );
+    }
+}
+
+
+void Foam::deformationUpdates::compatible::setContactNodalForces()
+{
+    if (!hasContact_)
+    {
+        return;
+    }
+
+    const fvMesh& mesh = faces_.mesh();
+
+    forAll(mesh.boundary(), patchi)
+    {
+        fvPatchVectorField& pf = faces_.lm().boundaryFieldRef()[patchi];
+        if (!isA<bodyContactFvPatchVectorField>(pf))
+        {
+            continue;
+        }
+
+        bodyContactFvPatchVectorField& condition =
+            refCast<bodyContactFvPatchVectorField>(pf);
+        const primitivePatch& pp = condition.patch().patch();
+        const labelList& meshPoints = pp.meshPoints();
+        const faceList& localFaces = pp.localFaces();
+
+        // The patch's faces at each of its points, on all ranks (every
+        // rank takes part, also one whose part of the patch is empty)
+        labelList nFaces(meshPoints.size(), 0);
+        for (const face& f : localFaces)
+        {
+            for (const label pointj : f)
+            {
+                ++nFaces[pointj];
+            }
+        }
+        syncTools::syncPointList
+        (
+            mesh, meshPoints, nFaces, plusEqOp<label>(), label(0)
+        );
+
+        vectorField& nodalForce = condition.nodalForce();
+        forAll(localFaces, i)
+        {
+            vector sum(Zero);
+            for (const label pointj : localFaces[i])
+            {
+                sum += pointForce_[meshPoints[pointj]]/nFaces[pointj];
+            }
+            nodalForce[i] = sum;
+        }
     }
 }
 
