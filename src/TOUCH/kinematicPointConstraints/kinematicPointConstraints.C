@@ -103,22 +103,12 @@ void Foam::kinematicPointConstraints::formProjectors()
         const tensorField& free = declaredFree_[patchi];
         const vectorField& velocity = declaredVelocity_[patchi];
 
-        if (surface_[patchi])
-        {
-            forAll(free, i)
-            {
-                const tensor fixed(tensor::I - free[i]);
-
-                for (const label pointi : faces[start + i])
-                {
-                    const label b = boundaryIndex_[pointi];
-                    surfaceSum[b] += fixed;
-                    surfaceVelocitySum[b] += fixed & velocity[i];
-                    prescribeEqOp()(surfaceLargest[b], velocity[i]);
-                }
-            }
-            continue;
-        }
+        // A smooth surface's faces go to its own sums
+        const bool surface = surface_[patchi];
+        tensorField& sum = surface ? surfaceSum : fixedSum_;
+        vectorField& sumVelocity =
+            surface ? surfaceVelocitySum : fixedVelocitySum;
+        vectorField& largest = surface ? surfaceLargest : velocitySum_;
 
         forAll(free, i)
         {
@@ -127,9 +117,9 @@ void Foam::kinematicPointConstraints::formProjectors()
             for (const label pointi : faces[start + i])
             {
                 const label b = boundaryIndex_[pointi];
-                fixedSum_[b] += fixed;
-                fixedVelocitySum[b] += fixed & velocity[i];
-                prescribeEqOp()(velocitySum_[b], velocity[i]);
+                sum[b] += fixed;
+                sumVelocity[b] += fixed & velocity[i];
+                prescribeEqOp()(largest[b], velocity[i]);
             }
         }
     }
