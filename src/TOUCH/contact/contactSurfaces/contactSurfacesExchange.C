@@ -119,7 +119,7 @@ void Foam::contactSurfaces::exchange(volVectorField& lm, faceSums& sums)
                     continue;
                 }
 
-                pair.share = overlapArea(gi, gj, pair.n);
+                pair.share = overlapArea(gi, gj, pair.n, pair.gap);
                 if (pair.share <= 0)
                 {
                     continue;

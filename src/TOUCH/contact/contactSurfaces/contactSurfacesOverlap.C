@@ -39,13 +39,15 @@ namespace Foam
         return (b.x() - a.x())*(c.y() - a.y()) - (b.y() - a.y())*(c.x() - a.x());
     }
 
-    //- The area of the intersection of two counter-clockwise triangles:
-    //  the first clipped by the half-planes left of the second's edges (a
-    //  triangle clipped by three half-planes has at most six corners)
+    //- The area of the intersection of two counter-clockwise triangles
+    //  and its first moment (area times centroid): the first clipped by
+    //  the half-planes left of the second's edges (a triangle clipped by
+    //  three half-planes has at most six corners)
     static scalar intersectionArea
     (
         const planeTriangle& a,
-        const planeTriangle& b
+        const planeTriangle& b,
+        vector2D& moment
     )
     {
         FixedList<vector2D, 8> polygon;
@@ -88,11 +90,15 @@ namespace Foam
         }
 
         scalar twice = 0;
+        moment = vector2D::zero;
         for (label k = 1; k + 1 < n; ++k)
         {
-            twice += twiceSignedArea(polygon[0], polygon[k], polygon[k + 1]);
+            const scalar t =
+                twiceSignedArea(polygon[0], polygon[k], polygon[k + 1]);
+            twice += t;
+            moment += (t/6)*(polygon[0] + polygon[k] + polygon[k + 1]);
         }
-        return 0.5*mag(twice);
+        return 0.5*twice;
     }
 }
 
@@ -103,7 +109,8 @@ Foam::scalar Foam::contactSurfaces::overlapArea
 (
     const label gi,
     const label gj,
-    const vector& n
+    const vector& n,
+    scalar& gap
 ) const
 {
     // A basis of the plane normal to n, about face gi's centre (offsets
@@ -168,13 +175,29 @@ Foam::scalar Foam::contactSurfaces::overlapArea
     }
 
     scalar overlap = 0;
+    vector2D moment(vector2D::zero);
     for (const planeTriangle& ti : trisI)
     {
         for (const planeTriangle& tj : trisJ)
         {
-            overlap += intersectionArea(ti, tj);
+            vector2D m;
+            overlap += intersectionArea(ti, tj, m);
+            moment += m;
         }
     }
+    if (overlap <= 0)
+    {
+        return 0;
+    }
+
+    // The gap at the overlap's centroid: from face gi's plane to face
+    // gj's along n (the centres' gap for matching faces; for faces that
+    // do not match, the planes' distance where they meet)
+    const vector2D c(moment/overlap);
+    const point p(origin + c.x()*e1 + c.y()*e2);
+    gap =
+        ((x_[gj] - p) & n_[gj])/(n & n_[gj])
+      - ((x_[gi] - p) & n_[gi])/(n & n_[gi]);
 
     // From the projection to the current areas (the faces' areas by
     // Nanson, as their tractions are per current area): the two faces'
