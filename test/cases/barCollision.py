@@ -29,9 +29,11 @@ with FUpdate compatible (the default) and plain:
               continued: lm, F, sigma at 2 and 3 ms those of the
               uninterrupted run bit for bit (the active set is written
               as lm's 'contact' entry and read back);
-  nonmatching equal (compatible), bar1 2 x 2 and bar2 3 x 3 faces
-              across: the run warns that the faces do not match (the
-              matching equal case does not), contact stress within 1 %;
+  nonmatching equal, compatible and plain, bar1 2 x 2 and bar2 3 x 3
+              faces across (forces by the pairs' overlap areas): contact
+              stress within 1 % and the checks of every variant above
+              (plain: but the energy, which grows with matching faces
+              of several cells across too);
 Serial = parallel on 2 and 3 ranks with the contact patches cut between
 them: test/cases/contactParallel.py.
 Work folders: test/runs/barCollision/.
@@ -69,13 +71,14 @@ def tutorial_case(root, name, args, update="compatible"):
     return case
 
 
-def common(name, r, failures):
-    """The checks of every two-body variant; their line."""
+def common(name, r, failures, energy=True):
+    """The checks of every two-body variant (energy: whether its growth is
+    asserted); their line."""
     h = 1.0 / N
     if r["momentumDrift"] > 1e-12:
         failures.append("%s: momentum drift %.2e |p0|"
                         % (name, r["momentumDrift"]))
-    if r["energyGrowth"] > 1e-12:
+    if energy and r["energyGrowth"] > 1e-12:
         failures.append("%s: energy grew %.2e E0 in a step"
                         % (name, r["energyGrowth"]))
     if r["mostTensile"] >= 0:
@@ -196,27 +199,28 @@ def restart(root, failures):
             " run at 2 and 3 ms" % (in_contact, worst))
 
 
-def nonmatching(root, failures):
-    """bar1 2 x 2 faces across, bar2 3 x 3 (compatible): the warning, and
-    the contact stress; the matching equal case without the warning."""
-    case = tutorial_case(root, "nonmatching",
-                         ["-n", "30", "-section", "2", "-section2", "3"])
+def nonmatching(root, failures, update):
+    """bar1 2 x 2 faces across, bar2 3 x 3: the pairs' overlap areas load
+    every face, so the contact stress, the exchange of momentum, the energy
+    and the penetration are held as on matching faces."""
+    name = "nonmatching-" + update
+    case = tutorial_case(root, name,
+                         ["-n", "30", "-section", "2", "-section2", "3"],
+                         update)
     r = analyse(case)
-    with open(os.path.join(case, "log.touchFoam")) as f:
-        warned = "do not match" in f.read()
-    with open(os.path.join(root, "equal-compatible", "log.touchFoam")) as f:
-        warned_matching = "do not match" in f.read()
-    if not warned or warned_matching:
-        failures.append("nonmatching: warned %s, matching warned %s"
-                        % (warned, warned_matching))
     if r["plateauError"] > 0.01:
-        failures.append("nonmatching: contact stress off by %.3g %%"
-                        % (100 * r["plateauError"]))
-    return ("nonmatching 2 x 2 / 3 x 3 faces (compatible): warned %s"
-            " (matching: %s), contact stress within %.2g %%, momentum"
-            " drift %.1e |p0| (not asserted: lumped forces)"
-            % (warned, warned_matching, 100 * r["plateauError"],
-               r["momentumDrift"]))
+        failures.append("%s: contact stress off by %.3g %%"
+                        % (name, 100 * r["plateauError"]))
+    # plain on sections of several cells gains energy in some steps with
+    # matching faces as well (2 x 2 against 2 x 2 at this step: the same
+    # 2.6e-4 E0 at 60 us; validation/barCollision/FINDINGS.md 5): not
+    # asserted there
+    return ("nonmatching 2 x 2 / 3 x 3 faces (%s): contact stress within"
+            " %.2g %%, %s%s" % (update, 100 * r["plateauError"],
+                                common(name, r, failures,
+                                       update == "compatible"),
+                                "" if update == "compatible"
+                                else " (not asserted)"))
 
 
 def body():
@@ -226,7 +230,8 @@ def body():
         for check in (equal, unequal, bimaterial):
             lines.append(check(root, failures, update))
     lines.append(restart(root, failures))
-    lines.append(nonmatching(root, failures))
+    for update in ("compatible", "plain"):
+        lines.append(nonmatching(root, failures, update))
     return testing.verdict(lines, failures)
 
 

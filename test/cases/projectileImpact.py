@@ -21,16 +21,19 @@ A copy of the tutorial at -n 4 (1 184 cells, quarter model, FUpdate plain,
     the energy estimate E0 - p_b^2/(2 m_b) - p_p^2/(2 M_p) (the energy the
     bodies' rigid motions do not carry; it holds the plate's vibrations
     and the scheme's dissipation too, so the plastic work falls below it:
-    measured 0.762 of it);
+    measured 0.436 of it since the faces are loaded by their overlap
+    areas, 0.762 before, when the lumped exchange's two sides' contact
+    work did not balance: validation/projectileImpact/FINDINGS.md 8);
   - the dent (the plate's top at the impact point below the plate's
     centre of mass) within DENT_BAND of Tabor's rigid-plastic estimate
-    h = sqrt(W/(3 pi Y R)) (measured 1.03 of it; rough: hardening, rate
+    h = sqrt(W/(3 pi Y R)) (measured 1.38 of it; rough: hardening, rate
     and bending are left out of the estimate, so the band is wide);
   - the ball rebounds (p_y of the ball > 0 at the end), the contact is
     released and never pulls (the most tensile contact traction <= 0);
-  - the penetration below PENETRATION of the smallest plate face (measured
-    0.114; the issue's 0.05 is not met on this mesh: today's level is
-    guarded, validation/projectileImpact/FINDINGS.md).
+  - the penetration (contact.dat's: the gap of a pair's face planes at
+    their overlap's centroid) below PENETRATION of the smallest plate face
+    (measured 0.353; the issue's 0.05 is not met on this mesh: today's
+    level is guarded, validation/projectileImpact/FINDINGS.md).
 Work folders: test/runs/projectileImpact/.
 """
 
@@ -50,14 +53,17 @@ N = 4
 #: 2026-12-06
 MOMENTUM_DRIFT = 1.5e-14
 
-#: plastic dissipation over the energy estimate (measured 0.762)
-PLASTIC_BAND = (0.5, 1.0)
+#: plastic dissipation over the energy estimate (measured 0.436 on
+#: 2026-12-06 with the overlap areas)
+PLASTIC_BAND = (0.3, 1.0)
 
-#: the dent over Tabor's estimate (measured 1.03)
+#: the dent over Tabor's estimate (measured 1.38)
 DENT_BAND = (0.5, 2.0)
 
-#: the largest penetration over the smallest plate face (measured 0.114)
-PENETRATION = 0.25
+#: the largest penetration over the smallest plate face (measured 0.353 at
+#: the overlaps' centroids, where the centres' gaps had read 0.114 with the
+#: ball's points 0.41 of a face deep)
+PENETRATION = 0.5
 
 
 def body():

@@ -14,9 +14,6 @@ License
 
 namespace Foam
 {
-    //- A face within this fraction of its size of its partner touches it
-    static const scalar contactTouchingTolerance = 1e-6;
-
     //- Number of contact faces of this rank
     static label nContactFaces(const fvMesh& mesh, const labelList& patches)
     {
@@ -98,8 +95,7 @@ Foam::contactSurfaces::contactSurfaces
     friction_(false),
     frictionRatio_(0),
     pairFrictionRatio_(0),
-    pairFrictionPower_(-GREAT),
-    matchChecked_(false)
+    pairFrictionPower_(-GREAT)
 {
     setAllowed(lm);
 
@@ -212,236 +208,67 @@ void Foam::contactSurfaces::update
     f_ = gather(f);
     slot_ = gather(Field<label>(slot));
 
-    // The faces' free points: the lowest of them decides the entry
+    // The faces' points (their overlaps; the lowest free one decides the
+    // entry) and whether each face was in contact
     {
         vectorField offsets;
+        boolList free;
         labelField counts;
-        freePoints(lm, x, offsets, counts);
+        facePoints(lm, x, offsets, free, counts);
         pointOffsets_ = gather(offsets);
         const labelField allCounts(gather(counts));
 
-        offsetStart_.setSize(allCounts.size() + 1);
-        offsetStart_[0] = 0;
+        labelField freeFlags(free.size());
+        forAll(free, o)
+        {
+            freeFlags[o] = free[o];
+        }
+        const labelField allFree(gather(freeFlags));
+        pointFree_.setSize(allFree.size());
+        forAll(allFree, o)
+        {
+            pointFree_[o] = allFree[o];
+        }
+
+        pointStart_.setSize(allCounts.size() + 1);
+        pointStart_[0] = 0;
         forAll(allCounts, g)
         {
-            offsetStart_[g + 1] = offsetStart_[g] + allCounts[g];
+            pointStart_[g + 1] = pointStart_[g] + allCounts[g];
+        }
+
+        labelField inContact(nLocal, 0);
+        forAll(patches_, s)
+        {
+            const boolList& contact =
+                refCast<const bodyContactFvPatchVectorField>
+                (
+                    lm.boundaryField()[patches_[s]]
+                ).contact();
+            forAll(contact, i)
+            {
+                inContact[start_[s] + i] = contact[i];
+            }
+        }
+        const labelField allInContact(gather(inContact));
+        wasInContact_.setSize(allInContact.size());
+        forAll(allInContact, g)
+        {
+            wasInContact_[g] = allInContact[g];
         }
     }
 
     // 2. Candidates, rebuilt only when the faces moved far enough
     updateSearch();
 
-    // 3-5. Each face of this rank as side 1 of its pair
+    // 3-5. Every pair of faces that overlap, once, summed per face over
+    // the ranks
+    faceSums sums(x_.size());
+    exchange(lm, sums);
+    sums.combine();
+
     const label offset = globalFaces_.localStart();
-    vectorField force(x_.size(), Zero);
-    vectorField moment(x_.size(), Zero);
-
-    // Per face, the pairs pushing on it weighted by their areas: the
-    // weight, the outward normal and the contact velocity v*_n n (the
-    // constraint of the compatible update)
-    scalarField weight(x_.size(), Zero);
-    vectorField normalSum(x_.size(), Zero);
-    vectorField velocitySum(x_.size(), Zero);
-
-    labelList partners(matchChecked_ ? 0 : x_.size(), -1);
-
     label nActive = 0;
-    scalar normalForce = 0;
-    scalar area = 0;
-    scalar penetration = 0;
-
-    forAll(patches_, s)
-    {
-        bodyContactFvPatchVectorField& condition =
-            refCast<bodyContactFvPatchVectorField>
-            (
-                lm.boundaryFieldRef()[patches_[s]]
-            );
-        boolList& contact = condition.contact();
-
-        // The pair's friction (the same on both patches: setAllowed)
-        const frictionLaw& law = condition.friction();
-        const bool friction = !law.frictionless();
-        vectorField& slip = condition.slip();
-        scalar& frictionPower = condition.frictionPower();
-        frictionPower = 0;
-
-        forAll(contact, i)
-        {
-            const label k = start_[s] + i;
-            const label gi = offset + k;
-            const label gj = partner(k, gi);
-
-            if (!matchChecked_)
-            {
-                partners[gi] = gj;
-            }
-
-            if (gj < 0)
-            {
-                contact[i] = false;
-                if (friction)
-                {
-                    slip[i] = Zero;
-                }
-                continue;
-            }
-
-            vector nij(n_[gi] - n_[gj]);
-            nij /= mag(nij);
-
-            // Both tractions on the plane of normal n (side 2's own
-            // normal is -n)
-            const vector t1(t_[gi]);
-            const vector t2(-t_[gj]);
-            const vector dv(v_[gj] - v_[gi]);
-
-            const scalar Zn1 = Zp_[gi];
-            const scalar Zn2 = Zp_[gj];
-            const scalar tN =
-                (Zn2*(t1 & nij) + Zn1*(t2 & nij) + Zn1*Zn2*(dv & nij))
-               /(Zn1 + Zn2);
-
-            const scalar gap = (x_[gj] - x_[gi]) & nij;
-            const bool compressive = tN < 0;
-
-            // Each side within the rigid wall's tolerance of its size of
-            // the contact plane: the pair's gap within the sum (with the
-            // first side's alone, two equal bars released one stage early
-            // did not touch again where a bar on a wall did: their gap of
-            // 3.8e-8 m against 2e-8 m, a wall's 1.9e-8 m against 2e-8 m).
-            // The gap of the lowest free point of either face, not of the
-            // centres: on curved bodies the centres of the faces that
-            // meet lag the surfaces (two balls touched 2.7 us late)
-            contact[i] =
-                compressive
-             && (
-                    contact[i]
-                 || pointGap(gi, gj, nij)
-                 <= contactTouchingTolerance
-                   *(Foam::sqrt(a_[gi]) + Foam::sqrt(a_[gj]))
-                );
-
-            if (!contact[i])
-            {
-                if (friction)
-                {
-                    // Side 1's sliding relative to side 2 as it arrives: a
-                    // face that lands sliding starts with the kinetic limit
-                    slip[i] = ((dv & nij)*nij) - dv;
-                }
-                continue;
-            }
-
-            const scalar share = 0.5*a_[gi];
-            vector f(tN*nij);
-
-            if (friction)
-            {
-                // The sticking traction (S-wave impedances), which makes
-                // the two sides' tangential velocities equal, and the
-                // law's return to its cone; each side's tangential
-                // velocity then follows its own characteristic,
-                //     v*_1 = v_1 + (t - t_1)/Z_1,  v*_2 = v_2 - (t - t_2)/Z_2,
-                // so side 1 slides relative to side 2 at
-                //     (t - stick)(1/Z_1 + 1/Z_2),
-                // against t: the pair's friction power t . slip <= 0
-                const scalar Zt1 = Zs_[gi];
-                const scalar Zt2 = Zs_[gj];
-                const tensor tangential(tensor::I - sqr(nij));
-                const vector stick
-                (
-                    tangential
-                  & ((Zt2*t1 + Zt1*t2 + Zt1*Zt2*dv)/(Zt1 + Zt2))
-                );
-                const vector tT(law.tangentialTraction(stick, -tN, slip[i]));
-
-                slip[i] = (tT - stick)*(1/Zt1 + 1/Zt2);
-                const scalar pairPower = (tT & slip[i])*share;
-                frictionPower += pairPower;
-                pairFrictionPower_ = max(pairFrictionPower_, pairPower);
-                pairFrictionRatio_ =
-                    max(pairFrictionRatio_, mag(tT)/max(-tN, VSMALL));
-                f += tT;
-            }
-            f *= share;
-
-            force[gi] += f;
-            force[gj] -= f;
-
-            // Both sides' torques at the pair's contact point
-            const vector m(0.5*(x_[gi] + x_[gj]) ^ f);
-            moment[gi] += m;
-            moment[gj] -= m;
-
-            // The constraint's normal velocity: the impedance-weighted
-            // mean of the two sides', without the Riemann velocity's
-            // traction jump (t2 - t1).n/(Z1 + Z2).  Under the constraint
-            // the central traction is its reaction, so the jump is already
-            // carried (and balanced) by the two sides' reactions; counted
-            // once more here it moved the points faster than both sides'
-            // cells, the faces' damping towards v*_n then pushed both
-            // balls the same way (+126 N and +122 N along y at 20 us,
-            // n = 8) and the balancing of the forces gave that back as
-            // energy (+0.44 E0 over the contact).  The mean lies between
-            // the sides and the two dampings are equal and opposite
-            //
-            // Less the two sides' shares of the nodal forces at the faces'
-            // points per area, f_1/a_1 + f_2/a_2, along n over (Z1 + Z2)
-            // (the compatible update's; zero with the others; per area,
-            // so that faces that do not match, of different areas, cancel
-            // under a uniform stress: with (f_1 + f_2)/a bars of 2 x 2
-            // and 3 x 3 faces were 1.65 % off the contact stress, per area
-            // 0.43 %): the constraint takes each side's
-            // nodal force there out as its reaction, and with this
-            // velocity the faces' dampings towards it take the two
-            // reactions' sum back, so that the two sides' forces are equal
-            // and opposite pair by pair (the balancing is left the shares
-            // that do not meet, at the contact's edge); in the work of the
-            // points' prescribed motion it adds -(f_1 + f_2)^2/((Z1 + Z2)
-            // a) for matching faces, a dissipation, as the point upwinding
-            // of a free point.
-            // Without it the balancing took the reactions' sum back from
-            // the cells, a work of either sign, and two balls gained
-            // energy (validation/sphereImpact/FINDINGS.md 7)
-            const scalar vN =
-                (
-                    Zn1*(v_[gi] & nij) + Zn2*(v_[gj] & nij)
-                  - ((f_[gi]/a_[gi] + f_[gj]/a_[gj]) & nij)
-                )/(Zn1 + Zn2);
-            weight[gi] += share;
-            weight[gj] += share;
-            normalSum[gi] += share*nij;
-            normalSum[gj] -= share*nij;
-            velocitySum[gi] += (share*vN)*nij;
-            velocitySum[gj] += (share*vN)*nij;
-
-            ++nActive;
-            normalForce -= tN*share;
-            area += share;
-            penetration = max(penetration, -gap);
-            mostTensile_ = max(mostTensile_, tN);
-        }
-    }
-
-    if (!matchChecked_)
-    {
-        checkMatching(partners);
-    }
-
-    if (Pstream::parRun())
-    {
-        Pstream::listCombineGather(force, plusEqOp<vector>());
-        Pstream::listCombineScatter(force);
-        Pstream::listCombineGather(moment, plusEqOp<vector>());
-        Pstream::listCombineScatter(moment);
-        Pstream::listCombineGather(weight, plusEqOp<scalar>());
-        Pstream::listCombineScatter(weight);
-        Pstream::listCombineGather(normalSum, plusEqOp<vector>());
-        Pstream::listCombineScatter(normalSum);
-        Pstream::listCombineGather(velocitySum, plusEqOp<vector>());
-        Pstream::listCombineScatter(velocitySum);
-    }
 
     // The conditions' tractions per reference area
     forAll(patches_, s)
@@ -453,6 +280,8 @@ void Foam::contactSurfaces::update
             );
         vectorField& traction = condition.traction();
         vectorField& faceMoment = condition.moment();
+        boolList& contact = condition.contact();
+        vectorField& slip = condition.slip();
         boolList& touching = condition.touching();
         vectorField& normal = condition.normal();
         vectorField& velocity = condition.contactVelocity();
@@ -461,13 +290,24 @@ void Foam::contactSurfaces::update
         forAll(traction, i)
         {
             const label g = offset + start_[s] + i;
-            traction[i] = force[g]/magSf[i];
-            faceMoment[i] = moment[g];
-            touching[i] = weight[g] > 0;
+            traction[i] = sums.force[g]/magSf[i];
+            faceMoment[i] = sums.moment[g];
+            contact[i] = sums.active[g];
+            nActive += contact[i];
+            if (friction_ && !condition.friction().frictionless())
+            {
+                // The area-weighted sliding of the face's pairs (in contact
+                // or arriving) decides its pairs' law in the next stage
+                slip[i] =
+                    sums.slipWeight[g] > 0
+                  ? vector(sums.slipSum[g]/sums.slipWeight[g])
+                  : vector::zero;
+            }
+            touching[i] = sums.weight[g] > 0;
             if (touching[i])
             {
-                normal[i] = normalSum[g]/mag(normalSum[g]);
-                velocity[i] = velocitySum[g]/weight[g];
+                normal[i] = sums.normalSum[g]/mag(sums.normalSum[g]);
+                velocity[i] = sums.velocitySum[g]/sums.weight[g];
 
                 if (friction_)
                 {
@@ -486,7 +326,10 @@ void Foam::contactSurfaces::update
     // The report, at the step's first stage
     if (stage == 1)
     {
-        writeReport(lm, time, nActive, normalForce, area, penetration);
+        writeReport
+        (
+            lm, time, nActive, sums.normalForce, sums.area, sums.penetration
+        );
     }
 }
 

@@ -7,8 +7,8 @@ License
 Description
     The pairing of contactSurfaces: which patches may touch, the candidate
     faces (an indexedOctree of the face centres, rebuilt only after a face
-    moved h/2), the partner of a face, the check of matching faces, and
-    the faces' free points that decide when a face enters contact.
+    moved h/2), the faces' points (their overlaps) and their free points
+    that decide when a face enters contact.
 
 \*---------------------------------------------------------------------------*/
 
@@ -18,28 +18,6 @@ Description
 #include "treeDataPoint.H"
 #include "syncTools.H"
 #include "pointFields.H"
-
-// * * * * * * * * * * * * * * * Local Constants * * * * * * * * * * * * * * //
-
-namespace Foam
-{
-    //- Opposed faces: the cosine of the angle of their normals below this
-    static const scalar contactOpposedCos = -0.5;
-
-    //- Lexicographic order of positions (ties of the pairing)
-    static bool before(const point& a, const point& b)
-    {
-        for (direction d = 0; d < point::nComponents; ++d)
-        {
-            if (a[d] != b[d])
-            {
-                return a[d] < b[d];
-            }
-        }
-        return false;
-    }
-}
-
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -190,111 +168,12 @@ void Foam::contactSurfaces::updateSearch()
 }
 
 
-Foam::label Foam::contactSurfaces::partner
-(
-    const label i,
-    const label gi
-) const
-{
-    const point& xi = x_[gi];
-    const vector& ni = n_[gi];
-    const scalar reachSqr = sqr(2*searchSize_);
-    const scalar behind = -0.5*Foam::sqrt(a_[gi]);
-
-    label best = -1;
-    scalar bestLateral = GREAT;
-
-    for (const label gj : candidates_[i])
-    {
-        if (gj == gi || !allowed_[slot_[gi]][slot_[gj]])
-        {
-            continue;
-        }
-
-        const vector d(x_[gj] - xi);
-        if ((ni & n_[gj]) > contactOpposedCos || magSqr(d) > reachSqr)
-        {
-            continue;
-        }
-
-        // Not a face of the far side of the body (self-contact of a thin
-        // part): a partner lies at most half a face behind
-        if ((d & ni) < behind)
-        {
-            continue;
-        }
-
-        // The nearest to the normal line; ties to the smaller global
-        // index's position order, not to the order of the ranks
-        const scalar lateral = mag(d - (d & ni)*ni);
-        if
-        (
-            lateral < bestLateral - SMALL*searchSize_
-         || (
-                best >= 0
-             && lateral <= bestLateral + SMALL*searchSize_
-             && before(x_[gj], x_[best])
-            )
-        )
-        {
-            best = gj;
-            bestLateral = min(lateral, bestLateral);
-        }
-    }
-
-    // Its centre projects within about the partner face
-    if (best >= 0 && bestLateral > 0.75*Foam::sqrt(a_[best]))
-    {
-        return -1;
-    }
-
-    return best;
-}
-
-
-void Foam::contactSurfaces::checkMatching(const labelList& partners)
-{
-    labelList all(partners);
-    if (Pstream::parRun())
-    {
-        Pstream::listCombineGather(all, maxEqOp<label>());
-        Pstream::listCombineScatter(all);
-    }
-
-    label nPaired = 0;
-    label nOneWay = 0;
-    forAll(all, g)
-    {
-        if (all[g] >= 0)
-        {
-            ++nPaired;
-            nOneWay += all[all[g]] != g;
-        }
-    }
-
-    if (nPaired == 0)
-    {
-        return;
-    }
-    matchChecked_ = true;
-
-    if (nOneWay)
-    {
-        WarningInFunction
-            << nOneWay << " of " << nPaired << " contact faces with a"
-            << " partner are not their partner's partner: the faces that"
-            << " meet do not match.  Their forces are exchanged exactly but"
-            << " lumped by half areas, not by overlap areas (with FUpdate"
-            << " plain such a contact can be unstable)" << endl;
-    }
-}
-
-
-void Foam::contactSurfaces::freePoints
+void Foam::contactSurfaces::facePoints
 (
     const volVectorField& lm,
     const pointField& centres,
     vectorField& offsets,
+    boolList& free,
     labelField& counts
 ) const
 {
@@ -331,8 +210,10 @@ void Foam::contactSurfaces::freePoints
     }
     syncTools::syncPointList(mesh_, held, orEqOp<bool>(), false);
 
-    // Per face of this rank, its free points' offsets from its centre
-    DynamicList<vector> free(4*centres.size());
+    // Per face of this rank, its points' offsets from its centre and
+    // whether they are free
+    DynamicList<vector> all(4*centres.size());
+    DynamicList<bool> isFree(4*centres.size());
     counts.setSize(centres.size());
     counts = 0;
     forAll(patches_, s)
@@ -343,16 +224,15 @@ void Foam::contactSurfaces::freePoints
             const label k = start_[s] + i;
             for (const label pointi : faces[patch.start() + i])
             {
-                if (!held[pointi])
-                {
-                    free.append(X[pointi] + pointU[pointi] - centres[k]);
-                    ++counts[k];
-                }
+                all.append(X[pointi] + pointU[pointi] - centres[k]);
+                isFree.append(!held[pointi]);
+                ++counts[k];
             }
         }
     }
 
-    offsets.transfer(free);
+    offsets.transfer(all);
+    free.transfer(isFree);
 }
 
 
@@ -369,13 +249,19 @@ Foam::scalar Foam::contactSurfaces::pointGap
     // partner's centre normal to n instead, the poles of two balls, which
     // touch, were a face's height difference apart
     scalar gap = (x_[gj] - x_[gi]) & n;
-    for (label o = offsetStart_[gi]; o < offsetStart_[gi + 1]; ++o)
+    for (label o = pointStart_[gi]; o < pointStart_[gi + 1]; ++o)
     {
-        gap = min(gap, (x_[gi] + pointOffsets_[o] - x_[gj]) & n_[gj]);
+        if (pointFree_[o])
+        {
+            gap = min(gap, (x_[gi] + pointOffsets_[o] - x_[gj]) & n_[gj]);
+        }
     }
-    for (label o = offsetStart_[gj]; o < offsetStart_[gj + 1]; ++o)
+    for (label o = pointStart_[gj]; o < pointStart_[gj + 1]; ++o)
     {
-        gap = min(gap, (x_[gj] + pointOffsets_[o] - x_[gi]) & n_[gi]);
+        if (pointFree_[o])
+        {
+            gap = min(gap, (x_[gj] + pointOffsets_[o] - x_[gi]) & n_[gi]);
+        }
     }
     return gap;
 }
