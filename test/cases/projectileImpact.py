@@ -21,19 +21,22 @@ A copy of the tutorial at -n 4 (1 184 cells, quarter model, FUpdate plain,
     the energy estimate E0 - p_b^2/(2 m_b) - p_p^2/(2 M_p) (the energy the
     bodies' rigid motions do not carry; it holds the plate's vibrations
     and the scheme's dissipation too, so the plastic work falls below it:
-    measured 0.436 of it since the faces are loaded by their overlap
+    measured 0.423 of it since the faces are loaded by their overlap
     areas, 0.762 before, when the lumped exchange's two sides' contact
-    work did not balance: validation/projectileImpact/FINDINGS.md 8);
+    work did not balance: validation/projectileImpact/FINDINGS.md 8, 9);
   - the dent (the plate's top at the impact point below the plate's
     centre of mass) within DENT_BAND of Tabor's rigid-plastic estimate
-    h = sqrt(W/(3 pi Y R)) (measured 1.38 of it; rough: hardening, rate
+    h = sqrt(W/(3 pi Y R)) (measured 0.66 of it; rough: hardening, rate
     and bending are left out of the estimate, so the band is wide);
   - the ball rebounds (p_y of the ball > 0 at the end), the contact is
     released and never pulls (the most tensile contact traction <= 0);
-  - the penetration (contact.dat's: the gap of a pair's face planes at
-    their overlap's centroid) below PENETRATION of the smallest plate face
-    (measured 0.353; the issue's 0.05 is not met on this mesh: today's
-    level is guarded, validation/projectileImpact/FINDINGS.md).
+  - no ball point deeper inside the plate than POINT_DEPTH of the
+    smallest plate face, below the top surface the plate's points draw, at
+    the written times (measured 0.050 on this mesh, 0.028 at -n 6: the
+    issue's 0.05; validation/projectileImpact/FINDINGS.md 9);
+  - the gap of a pair's face planes at their overlap's centroid
+    (contact.dat: the planes with the normals of the cells' F, up to 30
+    deg off the drawn faces in the dent) below PENETRATION of that face.
 Work folders: test/runs/projectileImpact/.
 """
 
@@ -60,9 +63,13 @@ PLASTIC_BAND = (0.3, 1.0)
 #: the dent over Tabor's estimate (measured 1.38)
 DENT_BAND = (0.5, 2.0)
 
-#: the largest penetration over the smallest plate face (measured 0.353 at
-#: the overlaps' centroids, where the centres' gaps had read 0.114 with the
-#: ball's points 0.41 of a face deep)
+#: the deepest ball point inside the plate over the smallest plate face
+#: (measured 0.0499 on 2026-12-06; 0.37 before the points a face pushed on
+#: counted in the plain update's entry test)
+POINT_DEPTH = 0.1
+
+#: the largest gap of a pair's planes over the smallest plate face
+#: (measured 0.183; 0.353 before)
 PENETRATION = 0.5
 
 
@@ -126,6 +133,15 @@ def body():
         failures.append("the ball is still in contact at the end")
     if not r["mostTensile"] <= 0:
         failures.append("a contact pulled: %.3e Pa" % r["mostTensile"])
+    depth = float("nan")
+    if r["pointDepth"] is None:
+        failures.append("no pointD written: no depth of the ball's points")
+    else:
+        depth = r["pointDepth"] / r["faceSize"]
+        if not depth <= POINT_DEPTH:
+            failures.append("a ball point %.4f mm inside the plate, %.3f of "
+                            "the smallest plate face (allowed %.2f)"
+                            % (1e3 * r["pointDepth"], depth, POINT_DEPTH))
     pen = r["penetration"] / r["faceSize"]
     if not pen <= PENETRATION:
         failures.append("penetration %.4f mm, %.3f of the smallest plate "
@@ -145,8 +161,9 @@ def body():
             r["plastic"], share, r["plasticEstimate"],
             1e3 * (r["dent"] or float("nan")), dent,
             1e3 * r["dentEstimate"]),
-        "ball %+.3f m/s at the end, penetration %.3f of the smallest plate "
-        "face" % (r["ballVelocity"], pen),
+        "ball %+.3f m/s at the end; deepest ball point %.4f, pair-plane "
+        "gap %.3f of the smallest plate face" % (r["ballVelocity"], depth,
+                                                 pen),
     ]
     return testing.verdict(lines, failures)
 

@@ -7,23 +7,21 @@ misses points between the centres).
 
     /usr/bin/python3 validation/projectileImpact/interpenetration.py CASE
 
-The plate's top is the piecewise-linear surface through its deformed
-points (x + pointD), interpolated over (x, z) (scipy's
-LinearNDInterpolator on their Delaunay triangulation: within the sagitta
-of a face of a quad's bilinear surface); a ball point's depth is that
-height less its own y.  Needs numpy and scipy.
+The plate's top is the surface drawn by its deformed points (x +
+pointD), each face fanned into triangles about the mean of its points
+(touchfoam.contact.depth_below_surface); a ball point's depth is that
+surface's height over the point less its own y.  Needs numpy.
 """
 
 import os
 import sys
 
 import numpy as np
-from scipy.interpolate import LinearNDInterpolator
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "..", "..", "bin", "python"))
 
-from touchfoam.contact import read_contact  # noqa: E402
+from touchfoam.contact import depth_below_surface, read_contact  # noqa: E402
 from touchfoam.foamfile import read_field  # noqa: E402
 from touchfoam.mesh import PolyMesh  # noqa: E402
 from touchfoam.run import time_dirs  # noqa: E402
@@ -32,7 +30,7 @@ from touchfoam.run import time_dirs  # noqa: E402
 def main(case):
     mesh = PolyMesh(case)
     ball = mesh.patch_points("ballSurface")
-    top = mesh.patch_points("plateTop")
+    top_faces = [mesh.faces[f] for f in mesh.patch_faces("plateTop")]
     area = np.linalg.norm(mesh.face_areas[list(mesh.patch_faces("plateTop"))],
                           axis=1)
     h = np.sqrt(area.min())
@@ -46,9 +44,7 @@ def main(case):
         D = np.asarray(read_field(os.path.join(case, name, "pointD"))
                        .values).reshape(-1, 3)
         x = mesh.points + D
-        surface = LinearNDInterpolator(x[top][:, [0, 2]], x[top][:, 1])
-        depth = surface(x[ball][:, [0, 2]]) - x[ball][:, 1]
-        depth = np.where(np.isnan(depth), -np.inf, depth)
+        depth = depth_below_surface(x, ball, top_faces)
         i = int(np.argmax(depth))
         k = int(np.argmin(np.abs(rows["Time"] - t)))
         print("%8.2f  %10.4f  (%.3f)  %8.3f  %10.4f"

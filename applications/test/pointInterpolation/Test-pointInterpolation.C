@@ -14,7 +14,13 @@ Description
       than hexahedra: at the points away from the boundary, where no
       least-squares stencil needs regularising);
     - the transpose is exact: f . (A v) = (A^T f) . v for arbitrary v and f,
-      which is the energy pairing of the compatible update.
+      which is the energy pairing of the compatible update;
+    and surfacePointFit, the points of contact surfaces from their faces'
+    values alone, with every boundary patch as the surface:
+    - a linear field of the faces is exact at every point of a flat part
+      of the boundary (its faces of one normal; edges and corners, where
+      the fit lies in the mean of two planes, are not), and a uniform one
+      at every point.
     Exits non-zero on any wrong answer.
 
 Usage
@@ -24,6 +30,7 @@ Usage
 
 #include "fvCFD.H"
 #include "linearPointInterpolation.H"
+#include "surfacePointFit.H"
 #include "calculatedFvPatchFields.H"
 #include "Random.H"
 #include "syncTools.H"
@@ -154,6 +161,103 @@ int main(int argc, char *argv[])
     (
         "transpose: f.(A v) = (A^T f).v, relative",
         mag(fAv - ATfv)/(mag(fAv) + mag(ATfv)),
+        1e-12
+    );
+
+    // surfacePointFit on every non-coupled patch
+    labelList patches;
+    forAll(mesh.boundaryMesh(), patchi)
+    {
+        if (!mesh.boundaryMesh()[patchi].coupled())
+        {
+            patches.append(patchi);
+        }
+    }
+    const surfacePointFit surfaceFit(mesh, patches);
+
+    // The points whose boundary faces share one normal (on any rank)
+    const vectorField& Sf = mesh.faceAreas();
+    vectorField firstNormal(mesh.nPoints(), Zero);
+    scalarField spread(mesh.nPoints(), Zero);
+    for (const label patchi : patches)
+    {
+        const polyPatch& patch = mesh.boundaryMesh()[patchi];
+        forAll(patch, i)
+        {
+            const vector n(Sf[patch.start() + i]/mag(Sf[patch.start() + i]));
+            for (const label pointi : patch[i])
+            {
+                if (magSqr(firstNormal[pointi]) == 0)
+                {
+                    firstNormal[pointi] = n;
+                }
+                spread[pointi] =
+                    max(spread[pointi], mag(n - firstNormal[pointi]));
+            }
+        }
+    }
+    syncTools::syncPointList(mesh, spread, maxEqOp<scalar>(), scalar(0));
+    // A point whose faces lie on different ranks: its normal on one rank
+    // may differ from another's; compare the ranks' first normals too
+    vectorField otherNormal(firstNormal);
+    syncTools::syncPointList
+    (
+        mesh, otherNormal, maxMagSqrEqOp<vector>(), vector::zero
+    );
+
+    const vectorField& Cf = mesh.faceCentres();
+    vectorField faceValues(mesh.nFaces(), Zero);
+    vectorField uniformValues(mesh.nFaces(), a);
+    forAll(faceValues, facei)
+    {
+        faceValues[facei] = exact(Cf[facei]);
+    }
+    vectorField surfaceValues(mesh.nPoints(), vector::max);
+    vectorField uniformPoints(mesh.nPoints(), vector::max);
+    surfaceFit.interpolate(faceValues, surfaceValues);
+    surfaceFit.interpolate(uniformValues, uniformPoints);
+
+    scalar flatErr = 0;
+    scalar uniformErr = 0;
+    label nFlat = 0;
+    label nSurface = 0;
+    forAll(points, pointi)
+    {
+        if (magSqr(firstNormal[pointi]) == 0)
+        {
+            continue;
+        }
+        ++nSurface;
+        uniformErr = max(uniformErr, mag(uniformPoints[pointi] - a));
+        if
+        (
+            spread[pointi] < 1e-8
+         && mag(mag(otherNormal[pointi]) - 1) < 1e-8
+         && mag(otherNormal[pointi] - firstNormal[pointi]) < 1e-8
+        )
+        {
+            flatErr =
+                max(flatErr, mag(surfaceValues[pointi] - exact(points[pointi])));
+            ++nFlat;
+        }
+    }
+    reduce(flatErr, maxOp<scalar>());
+    reduce(uniformErr, maxOp<scalar>());
+    reduce(nFlat, sumOp<label>());
+    reduce(nSurface, sumOp<label>());
+
+    report.check
+    (
+        "surfacePointFit: linear field exact at "
+      + Foam::name(nFlat) + " points of flat boundary parts",
+        flatErr,
+        1e-10
+    );
+    report.check
+    (
+        "surfacePointFit: uniform field exact at "
+      + Foam::name(nSurface) + " boundary points",
+        uniformErr,
         1e-12
     );
 

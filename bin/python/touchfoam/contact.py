@@ -188,3 +188,35 @@ def compare_with_wall(collision, wall):
         first[field] /= scale[field]
         mirror[field] /= scale[field]
     return first, mirror, len(times)
+
+
+def depth_below_surface(x, points, faces, up=1):
+    """How far each of the points x[points] lies below the surface drawn by
+    the faces (lists of point labels into x), along the axis `up` (0, 1, 2):
+    the surface's height over the point's position in the other two
+    coordinates less the point's own, positive inside; -inf where no face
+    lies over the point.  Each face is fanned into triangles about the mean
+    of its points (the drawn surface within a face's sagitta)."""
+    plane = [k for k in range(3) if k != up]
+    tri = []
+    for face in faces:
+        corners = x[list(face)]
+        centre = corners.mean(axis=0)
+        for k in range(len(face)):
+            tri.append((corners[k], corners[(k + 1) % len(face)], centre))
+    tri = np.asarray(tri)                          # (T, 3 vertices, 3)
+    a, b, c = (tri[:, k, :] for k in range(3))
+    p = x[list(points)]                            # (P, 3)
+    # Barycentric coordinates in the plane of the two other axes
+    v0 = (b - a)[:, plane]
+    v1 = (c - a)[:, plane]
+    v2 = p[:, None, plane] - a[None, :, plane]     # (P, T, 2)
+    det = v0[:, 0] * v1[:, 1] - v0[:, 1] * v1[:, 0]
+    det = np.where(np.abs(det) > 0, det, np.inf)
+    s = (v2[..., 0] * v1[None, :, 1] - v2[..., 1] * v1[None, :, 0]) / det
+    t = (v0[None, :, 0] * v2[..., 1] - v0[None, :, 1] * v2[..., 0]) / det
+    inside = (s >= -1e-12) & (t >= -1e-12) & (s + t <= 1 + 1e-12)
+    height = (a[None, :, up] + s * (b - a)[None, :, up]
+              + t * (c - a)[None, :, up])
+    depth = np.where(inside, height - p[:, None, up], -np.inf)
+    return depth.max(axis=1)

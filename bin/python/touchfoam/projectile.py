@@ -28,7 +28,7 @@ import re
 
 import numpy as np
 
-from .contact import options, read_contact
+from .contact import depth_below_surface, options, read_contact
 from .foamfile import read_field
 from .mesh import PolyMesh
 from .monitor import read_monitor
@@ -169,7 +169,27 @@ def analyse(case):
     fa = np.linalg.norm(mesh.face_areas[list(mesh.patch_faces("plateTop"))],
                         axis=1)
     out["faceSize"] = math.sqrt(float(np.min(fa)))
+    out["pointDepth"], out["pointDepthTime"] = deepest_point(case, mesh)
     return out
+
+
+def deepest_point(case, mesh):
+    """How deep the ball's surface points lie inside the plate, below the
+    top surface its points draw, the most over the written times (m), and
+    that time (s); None without a written pointD."""
+    ball = mesh.patch_points("ballSurface")
+    top = [mesh.faces[f] for f in mesh.patch_faces("plateTop")]
+    deepest, when = None, None
+    for t, name in sorted(time_dirs(case).items()):
+        path = os.path.join(case, name, "pointD")
+        if t <= 0 or not os.path.exists(path):
+            continue
+        D = np.asarray(read_field(path).values).reshape(-1, 3)
+        depth = float(np.max(depth_below_surface(mesh.points + D, ball,
+                                                 top)))
+        if deepest is None or depth > deepest:
+            deepest, when = depth, t
+    return deepest, when
 
 
 def friction_coefficient(case):

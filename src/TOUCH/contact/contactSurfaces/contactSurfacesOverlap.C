@@ -113,6 +113,28 @@ Foam::scalar Foam::contactSurfaces::overlapArea
     scalar& gap
 ) const
 {
+    // Faces whose projected discs (about the centres, through the farthest
+    // point) lie apart do not overlap: most of a face's candidates, tested
+    // without building their triangles
+    auto projectedRadius = [&](const label g)
+    {
+        scalar r2 = 0;
+        for (label o = pointStart_[g]; o < pointStart_[g + 1]; ++o)
+        {
+            const vector& d = pointOffsets_[o];
+            r2 = max(r2, magSqr(d) - sqr(d & n));
+        }
+        return Foam::sqrt(max(r2, scalar(0)));
+    };
+    {
+        const vector d(x_[gj] - x_[gi]);
+        const scalar apart = Foam::sqrt(max(magSqr(d) - sqr(d & n), 0.0));
+        if (apart >= projectedRadius(gi) + projectedRadius(gj))
+        {
+            return 0;
+        }
+    }
+
     // A basis of the plane normal to n, about face gi's centre (offsets
     // of the size of the faces: no round-off from the positions' size)
     vector e1(n ^ vector(1, 0, 0));
@@ -176,10 +198,39 @@ Foam::scalar Foam::contactSurfaces::overlapArea
 
     scalar overlap = 0;
     vector2D moment(vector2D::zero);
+    // Each triangle's bounding box: pairs of boxes apart are not clipped
+    auto box = [](const planeTriangle& t, vector2D& lo, vector2D& hi)
+    {
+        lo = hi = t[0];
+        for (label k = 1; k < 3; ++k)
+        {
+            lo = vector2D(min(lo.x(), t[k].x()), min(lo.y(), t[k].y()));
+            hi = vector2D(max(hi.x(), t[k].x()), max(hi.y(), t[k].y()));
+        }
+    };
+    List<vector2D> loJ(trisJ.size());
+    List<vector2D> hiJ(trisJ.size());
+    forAll(trisJ, k)
+    {
+        box(trisJ[k], loJ[k], hiJ[k]);
+    }
+
     for (const planeTriangle& ti : trisI)
     {
-        for (const planeTriangle& tj : trisJ)
+        vector2D loI;
+        vector2D hiI;
+        box(ti, loI, hiI);
+        forAll(trisJ, k)
         {
+            if
+            (
+                loI.x() >= hiJ[k].x() || loJ[k].x() >= hiI.x()
+             || loI.y() >= hiJ[k].y() || loJ[k].y() >= hiI.y()
+            )
+            {
+                continue;
+            }
+            const planeTriangle& tj = trisJ[k];
             vector2D m;
             overlap += intersectionArea(ti, tj, m);
             moment += m;

@@ -183,19 +183,28 @@ void Foam::contactSurfaces::facePoints
         mesh_.lookupObject<pointVectorField>("pointD").primitiveField();
     const faceList& faces = mesh_.faces();
 
-    // The points a face pushed on in the last stage holds, on any rank:
-    // they stay out, so that a face beside the contact area does not touch
-    // through the points its neighbours hold (as the rigid wall's
-    // lowestFreePoint)
+    // The points a face pushed on in the last stage, where the update holds
+    // them (compatible), on any rank: they stay out, so that a face beside
+    // the contact area does not touch through the points its neighbours
+    // hold (as the rigid wall's lowestFreePoint; two balls pressed twice
+    // the closed form's force otherwise).  Where nothing holds them (plain)
+    // they count: such a point shared with a face not yet in contact sank
+    // with it until that face's own points touched, 0.37 of a plate face
+    // on the projectile (validation/projectileImpact/FINDINGS.md 9)
     boolList held(mesh_.nPoints(), false);
     forAll(patches_, s)
     {
         const fvPatch& patch = mesh_.boundary()[patches_[s]];
-        const boolList& touching =
+        const bodyContactFvPatchVectorField& condition =
             refCast<const bodyContactFvPatchVectorField>
             (
                 lm.boundaryField()[patches_[s]]
-            ).touching();
+            );
+        if (!condition.pointConstrained())
+        {
+            continue;
+        }
+        const boolList& touching = condition.touching();
 
         forAll(touching, i)
         {

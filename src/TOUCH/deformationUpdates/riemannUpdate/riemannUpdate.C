@@ -10,6 +10,33 @@ License
 #include "kinematicPointConstraints.H"
 #include "syncTools.H"
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The patches whose condition is a contact surface between bodies
+Foam::labelList contactSurfacePatches(const Foam::volVectorField& lm)
+{
+    Foam::DynamicList<Foam::label> patches;
+    forAll(lm.boundaryField(), patchi)
+    {
+        const auto* condition =
+            Foam::isA<Foam::solidFluxFvPatchVectorField>
+            (
+                lm.boundaryField()[patchi]
+            );
+        if (condition && condition->contactSurface())
+        {
+            patches.append(patchi);
+        }
+    }
+    return Foam::labelList(std::move(patches));
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
 void Foam::deformationUpdates::riemannUpdate::momentumRates
@@ -128,6 +155,10 @@ void Foam::deformationUpdates::riemannUpdate::momentumRates
         faceVelocity_,
         pointV
     );
+    if (surfaceFitActive_)
+    {
+        surfaceFit_.interpolate(faceVelocity_, pointV);
+    }
     if (!mirrorsFormed_)
     {
         formMirrors(fixedSum);
@@ -254,6 +285,10 @@ void Foam::deformationUpdates::riemannUpdate::momentumRatesOfMaterials
     }
 
     pointFit_.interpolate(v, 1, faceVelocity_, pointV);
+    if (surfaceFitActive_)
+    {
+        surfaceFit_.interpolate(faceVelocity_, pointV);
+    }
     if (!mirrorsFormed_)
     {
         formMirrors(fixedSum);
@@ -342,6 +377,8 @@ Foam::deformationUpdates::riemannUpdate::riemannUpdate
     deformationUpdate(controls, faces, law, riemann, reconstruction),
     faceVelocity_(faces.mesh().nFaces(), Zero),
     pointFit_(faces.mesh()),
+    surfaceFit_(faces.mesh(), contactSurfacePatches(faces.lm())),
+    surfaceFitActive_(surfaceFit_.active()),
     mirrorsFormed_(false)
 {}
 
