@@ -124,7 +124,19 @@ Foam::surfacePointFit::surfacePointFit
     }
     faces_.transfer(faces);
 
+    if (returnReduce(faces_.size(), sumOp<label>()) == 0)
+    {
+        return;
+    }
     calcWeights();
+
+    // The scratch sums only where there is a contact surface: a mesh
+    // without one pays nothing
+    if (active())
+    {
+        sumV_.setSize(mesh_.nPoints());
+        sumDV_.setSize(mesh_.nPoints());
+    }
 }
 
 
@@ -146,8 +158,10 @@ void Foam::surfacePointFit::interpolate
     const vectorField& Cf = mesh_.faceCentres();
     const faceList& faces = mesh_.faces();
 
-    vectorField sumV(mesh_.nPoints(), Zero);
-    tensorField sumDV(mesh_.nPoints(), Zero);
+    vectorField& sumV = sumV_;
+    tensorField& sumDV = sumDV_;
+    sumV = Zero;
+    sumDV = Zero;
     for (const label facei : faces_)
     {
         const vector& v = faceValues[facei];
