@@ -21,11 +21,11 @@ Cases (tutorial settings otherwise):
                     written every 0.02 s (the top turns at most 2.1 rad
                     between writes: the twist unwraps); error: |mean top
                     twist at 0.1 s (postprocess.column_twist, as
-                    validation/twistingColumn) - 330.7 deg|, the middle of
-                    the band 328.9-332.6 deg bracketed by touchFoam and
-                    CalculiX C3D8R on 24x144x24 (validation/calculix; the
-                    302-306 deg once quoted came from the peer's
-                    unwrapping of the angles, see its README).
+                    validation/twistingColumn) - reference|, the
+                    converged twist and its band from both codes'
+                    Richardson extrapolations
+                    (validation/twistingColumn/reference.json, the
+                    reference validation/calculix uses too).
 
 Settings: reconstruction firstOrder | linear | limitedLinear, timeScheme
 RK2 at CFL 0.3 0.5 0.6 and RK3 at CFL 0.5 1.0 (0.6 and 1.0 are the measured

@@ -237,7 +237,7 @@ def plot(name, out, path):
                            label="inside the reference band")
             else:
                 ax.axhspan(*TWIST_BAND, color="0.85", zorder=0,
-                           label="CalculiX 12x72x12: %g-%g deg" % TWIST_BAND)
+                           label="reference band: %g-%g deg" % TWIST_BAND)
                 # firstOrder dissipates the twist away: keep it off the scale
                 kept = [r[key] for r in rows
                         if not r["setting"].startswith("firstOrder")]

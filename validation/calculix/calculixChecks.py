@@ -5,13 +5,13 @@ measured value beside an independent reference:
 
 column  the twist at 0.1 s of touchFoam (the tutorial's setting, 'default')
         and of CalculiX C3D8R against the converged twist,
-        CONVERGED = 332.2 +- 0.5 deg (the Richardson extrapolations of both
-        codes on 6/12/24 and 8/16/32: touchFoam 332.7 and 332.4, order
-        1.4-1.5; CalculiX C3D8R 331.7, order 1.9).  The error may be at
+        CONVERGED +- CONVERGED_PM, the middle and half-width of the band
+        of both codes' Richardson extrapolations
+        (../twistingColumn/reference.json).  The error may be at
         most 1.5 times the error measured on 2026-12-05 (touchFoam 11.3 /
-        4.1 / 1.3 deg on n = 6 / 12 / 24, C3D8R 11.2 / 2.7 / 0.4), taken
-        as e(n) = e6 (6/n)^p with the observed order p, plus the 0.5 deg
-        uncertainty of the reference; and the two codes must bracket it
+        4.1 / 1.3 deg on n = 6 / 12 / 24, C3D8R 11.2 / 2.7 / 0.4, against
+        332.2), taken as e(n) = e6 (6/n)^p with the observed order p, plus
+        the reference's half-band; and the two codes must bracket it
         (touchFoam from below, CalculiX from above: both converge from
         their side on every mesh measured).
 cube    the errors against the closed form (analytic.py) at 0.004 s of
@@ -25,6 +25,7 @@ cube    the errors against the closed form (analytic.py) at 0.004 s of
 Wall times are reported by compare.py, not checked: the machine is shared.
 """
 
+import json
 import math
 import os
 
@@ -32,8 +33,13 @@ from touchfoam import checks
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
-CONVERGED = 332.2       # deg, issue 35
-CONVERGED_PM = 0.5
+#: the converged twist and half its band [deg]: both codes' Richardson
+#: extrapolations, ../twistingColumn/reference.json (reference.py), the
+#: reference compare.py and timeToAccuracy.py use
+with open(os.path.join(HERE, "..", "twistingColumn", "reference.json")) as _f:
+    _converged = json.load(_f)
+CONVERGED = round(_converged["reference"], 2)
+CONVERGED_PM = round(0.5 * (_converged["band"][1] - _converged["band"][0]), 2)
 #: (error on n = 6 [deg], observed order) of each code, 2026-12-05
 TWIST_ERROR = {("touchFoam", "default"): (11.3, 1.5),
                ("CalculiX", "C3D8R"): (11.2, 1.9)}

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The twisting column's converged twist at 0.1 s, from both codes.
 
-    /usr/bin/python3 validation/twistingColumn/reference.py touchFoam N [RANKS]
+    /usr/bin/python3 validation/twistingColumn/reference.py touchFoam N [RANKS] [--nu NU]
     /usr/bin/python3 validation/twistingColumn/reference.py ccx N ELEMENT
     /usr/bin/python3 validation/twistingColumn/reference.py analyse
 
@@ -12,7 +12,10 @@ approach it from opposite sides: touchFoam at the tutorial's setting
 (linear, RK3, CFL 0.8) from below, CalculiX 2.20 C3D8R and C3D8 from above.
 
 touchFoam N   the tutorial on N x 6N x N, written every 0.01 s; twist by
-              postprocess.column_twist (unwrapped through the writes)
+              postprocess.column_twist (unwrapped through the writes);
+              --nu NU another Poisson's ratio (runs touchFoam_nu<NU>_n<N>):
+              the same scheme's convergence towards a nearly incompressible
+              limit, the locking check of issue 35 (not in the band)
 ccx N EL      CalculiX on the same grid (validation/calculix/decks.py),
               one explicit step to 0.1 s; twist at the end, each point's
               angle on the branch nearest the last touchFoam estimate
@@ -24,7 +27,9 @@ analyse       each code's (and element's) finest three meshes in the
               element is borrowed.  The band is the span of the codes'
               extrapolations, each widened by its uncertainty (the spread
               of its triplets' extrapolations; half the shift |T* - T3|
-              when its order is borrowed); writes reference.json.
+              when its order is borrowed); writes reference.json.  Runs at
+              another nu are analysed alike and reported under 'otherNu'
+              with each run's largest energy growth in a step (/ E0).
 
 The twist is the mean rotation about +Y of the top-face points at least
 0.25 m from the axis (both codes the same points and formula).  Runs go
@@ -83,9 +88,10 @@ def save(folder, info):
           % (folder, info["twist"], info["wall"], info["cpu"]), flush=True)
 
 
-def run_touch(n, ranks=1):
-    folder = os.path.join(RUNS, "touchFoam_n%d" % n)
-    cases.prepare("twistingColumn", folder, n=n,
+def run_touch(n, ranks=1, nu=NU):
+    folder = os.path.join(RUNS, "touchFoam_n%d" % n if nu == NU
+                          else "touchFoam_nu%g_n%d" % (nu, n))
+    cases.prepare("twistingColumn", folder, n=n, nu=nu,
                   control={"endTime": T_END, "writeInterval": 0.01})
     if ranks > 1:
         run.foam_set(folder, "system/decomposeParDict", "numberOfSubdomains",
@@ -100,7 +106,10 @@ def run_touch(n, ranks=1):
     info["twist"] = math.degrees(postprocess.column_twist(folder)[-1][1])
     energy = monitor.read_monitor(folder)["totalEnergy"]
     info["energyKept"] = energy[-1] / energy[0]
-    info.update(code="touchFoam", n=n)
+    info["largestGrowth"] = max(0.0, float(np.max(np.diff(energy)))) \
+        / energy[0]
+    info.update(code="touchFoam" if nu == NU else "touchFoam nu %g" % nu,
+                n=n, nu=nu)
     save(folder, info)
 
 
@@ -167,26 +176,56 @@ def richardson(values, borrowed_order=None):
     return None, None, None, False
 
 
-def analyse():
+def recorded():
+    """The runs reference.json already holds, {code: {n: info}}: the runs/
+    folders are not kept in git, so a new run adds to the record (and a
+    rerun of the same code and mesh replaces its entry) instead of
+    starting it again."""
+    path = os.path.join(HERE, "reference.json")
+    if not os.path.exists(path):
+        return {}
+    with open(path) as f:
+        old = json.load(f)
     found = {}
+    for group in ("codes", "otherNu"):
+        for code, entry in old.get(group, {}).items():
+            for n, twist in entry["twist"].items():
+                info = {"twist": twist, "wall": entry["wall"][n],
+                        "nu": entry.get("nu", NU)}
+                growth = entry.get("largestGrowth", {}).get(n)
+                if growth is not None:
+                    info["largestGrowth"] = growth
+                found.setdefault(code, {})[int(n)] = info
+    return found
+
+
+def analyse():
+    found = recorded()
     for name in sorted(os.listdir(RUNS)):
         path = os.path.join(RUNS, name, "run.json")
         if os.path.exists(path):
             with open(path) as f:
                 info = json.load(f)
             found.setdefault(info["code"], {})[info["n"]] = info
-    result = {"codes": {}}
+    result = {"codes": {}, "otherNu": {}}
     orders = {}
     for code, runs in sorted(found.items()):
         twists = {n: r["twist"] for n, r in runs.items()}
         p, ext, half, own = richardson(twists)
-        orders[code] = p
-        result["codes"][code] = {"twist": twists, "order": p,
+        other = any(r.get("nu", NU) != NU for r in runs.values())
+        if not other:
+            orders[code] = p
+        group = result["otherNu" if other else "codes"]
+        group[code] = {"twist": twists, "order": p,
+                       "nu": next(iter(runs.values())).get("nu", NU),
                                  "triplets": triplets(twists),
                                  "extrapolation": ext, "uncertainty": half,
                                  "ownOrder": own,
                                  "wall": {n: r["wall"]
-                                          for n, r in runs.items()}}
+                                          for n, r in runs.items()},
+                                 "largestGrowth": {
+                                     n: r.get("largestGrowth")
+                                     for n, r in runs.items()}}
     for code, entry in result["codes"].items():
         if entry["extrapolation"] is None:
             others = [o for c, o in orders.items() if c != code and o
@@ -204,7 +243,8 @@ def analyse():
         result["reference"] = 0.5 * (low + high)
     with open(os.path.join(HERE, "reference.json"), "w") as f:
         json.dump(result, f, indent=1, sort_keys=True)
-    for code, e in result["codes"].items():
+    for code, e in list(result["codes"].items()) \
+            + list(result["otherNu"].items()):
         print("%-18s %s  order %s  extrapolated %s" % (
             code, " ".join("n%d %.2f" % (n, t)
                            for n, t in sorted(e["twist"].items())),
@@ -223,9 +263,14 @@ def analyse():
 
 def main():
     what = sys.argv[1] if len(sys.argv) > 1 else ""
-    if what == "touchFoam" and len(sys.argv) in (3, 4):
-        run_touch(int(sys.argv[2]), int(sys.argv[3]) if len(sys.argv) == 4
-                  else 1)
+    args = sys.argv[2:]
+    nu = NU
+    if "--nu" in args:
+        at = args.index("--nu")
+        nu = float(args[at + 1])
+        del args[at:at + 2]
+    if what == "touchFoam" and len(args) in (1, 2):
+        run_touch(int(args[0]), int(args[1]) if len(args) == 2 else 1, nu)
     elif what == "ccx" and len(sys.argv) == 4:
         run_ccx(int(sys.argv[2]), sys.argv[3])
     elif what == "analyse":
