@@ -16,8 +16,9 @@ each) and the converged twist and its band from
                          setting), bars for the band's ends
     timeToAccuracy.md    the wall time each needs for an error of 10, 5
                          and 1 deg: the line log e = a + b log t through
-                         its two finest meshes, marked '*' where that is
-                         outside its measured range (an extrapolation)
+                         the two meshes whose errors bracket it, or the
+                         nearest two, marked '*' (an extrapolation); and
+                         the ratios of CalculiX's times to touchFoam's
 
 The errors use the reference's middle; a code whose error changes sign
 inside the band is marked in the table.
@@ -49,13 +50,26 @@ def load():
 
 def time_for(points, target):
     """(wall time for error target, extrapolated?) on the log-log line
-    through the last two (wall, error) points."""
-    (t1, e1), (t2, e2) = points[-2:]
-    if e1 <= 0 or e2 <= 0 or e1 == e2:
+    through the two successive (wall, error) points whose errors bracket
+    the target, or through the nearest two when none do."""
+    points = [(t, e) for t, e in points if t > 0 and e > 0]
+    if len(points) < 2:
+        return None, True
+    segments = list(zip(points[:-1], points[1:]))
+    inside = [seg for seg in segments
+              if min(seg[0][1], seg[1][1]) <= target
+              <= max(seg[0][1], seg[1][1])]
+    if inside:
+        (t1, e1), (t2, e2) = inside[0]
+    elif target < min(e for _, e in points):
+        (t1, e1), (t2, e2) = segments[-1]
+    else:
+        (t1, e1), (t2, e2) = segments[0]
+    if e1 == e2 or t1 == t2:
         return None, True
     slope = math.log(e2 / e1) / math.log(t2 / t1)
     t = t2 * (target / e2) ** (1.0 / slope)
-    return t, not min(t1, t2) <= t <= max(t1, t2)
+    return t, not inside
 
 
 def table(results, reference, curves):
@@ -78,7 +92,8 @@ def table(results, reference, curves):
                             0.0 if sign else ends[0], ends[1],
                             " (inside)" if sign else ""))
     lines += ["", "Wall time [s] to reach an error of (log-log line "
-              "through the two finest meshes; * extrapolated):", "",
+              "between the meshes that bracket it; * extrapolated from "
+              "the nearest two):", "",
               "| code | " + " | ".join("%g deg" % t for t in TARGETS)
               + " |", "|---|" + "---|" * len(TARGETS)]
     for name, runs in curves.items():
@@ -89,6 +104,44 @@ def table(results, reference, curves):
             cells.append("-" if t is None else "%.3g%s"
                          % (t, "*" if outside else ""))
         lines.append("| %s | %s |" % (name, " | ".join(cells)))
+    lines += ["", "Ratio of CalculiX's wall time to touchFoam's for the same "
+              "error (issue 35, acceptance 2: >= 1 at 1 deg, >= 3 at 5 and "
+              "10 deg), touchFoam's tutorial setting ('default') and its "
+              "fastest setting at that error:", "",
+              "| error | CalculiX | its wall [s] | touchFoam default [s] | "
+              "ratio | fastest touchFoam setting | its wall [s] | ratio |",
+              "|---|---|---|---|---|---|---|---|"]
+    times = {}
+    for name, runs in curves.items():
+        points = [(w, abs(t - ref)) for _, w, t in runs]
+        times[name] = {target: time_for(points, target)
+                       for target in TARGETS}
+    touch = [name for name in curves if name.startswith("touchFoam")]
+    for target in TARGETS:
+        found = [(times[name][target], name) for name in touch
+                 if times[name][target][0] is not None]
+        if not found:
+            continue
+        (fastest, extrapolated), which = min(found)
+        default = times.get("touchFoam default", {}).get(target,
+                                                         (None, True))
+        for name in curves:
+            if not name.startswith("CalculiX"):
+                continue
+            t, out = times[name][target]
+            if t is None:
+                continue
+
+            def ratio(other):
+                return "-" if other is None else "%.2f" % (t / other)
+            lines.append(
+                "| %g deg | %s | %.3g%s | %s | %s | %s | %.3g%s | %s |"
+                % (target, name.replace("CalculiX ", ""), t,
+                   "*" if out else "",
+                   "-" if default[0] is None else "%.3g%s"
+                   % (default[0], "*" if default[1] else ""),
+                   ratio(default[0]), which.replace("touchFoam ", ""),
+                   fastest, "*" if extrapolated else "", ratio(fastest)))
     return lines
 
 
@@ -126,6 +179,10 @@ def plot(reference, curves, path):
 
 
 def main():
+    with open(os.path.join(HERE, "results.json")) as f:
+        if "column" not in json.load(f):
+            print("timeToAccuracy: results.json has no column: nothing to do")
+            return
     results, reference, curves = load()
     lines = table(results, reference, curves)
     with open(os.path.join(HERE, "timeToAccuracy.md"), "w") as f:
