@@ -27,7 +27,17 @@ coarsest mesh of the study (validation/sphereImpact/FINDINGS.md):
           contact and the symmetric plane; 1.9e-3 before).  The contact
           time is 14 % short on this mesh (one face of each quarter cap is
           in contact, the contact's radius is not resolved: FINDINGS.md),
-          so its tolerance guards today's value, not the issue's 5 %.
+          so its tolerance guards today's value, not the issue's 5 %;
+  sphere8 the two balls at -n 8 (several faces in contact, pairs of
+          partly overlapping faces on a curved contact): the force the
+          balls receive and the contact time within the issue's 5 % of the
+          closed form (measured -2.89 % and +2.34 % on 2026-12-06; before
+          the points were counted only over their partner face, +144.7 %
+          with faces outside the contact held), at most 8 faces in contact
+          (7), momentum as above, and the energy's growth in a step at most
+          ENERGY_GROWTH_8 (measured 1.1e-4 E0 during the release: issue 28
+          asks for none, validation/sphereImpact/FINDINGS.md 8; 3.1e-3
+          before).
 Work folders: test/runs/sphereImpact/.
 """
 
@@ -59,16 +69,23 @@ MOMENTUM_DRIFT = 1e-12
 #: the balls' momenta at the end against a rigid elastic exchange
 EXCHANGE = 0.03
 
+#: -n 8 between the balls: (peak force, contact time) tolerance, the most
+#: faces in contact, the largest energy growth in a step [E0] allowed
+#: (about twice the 1.1e-4 measured on 2026-12-06; not the issue's zero)
+TOLERANCE_8 = (0.05, 0.05)
+MAX_FACES_8 = 8
+ENERGY_GROWTH_8 = 2.5e-4
 
-def solve(root, variant):
-    case = os.path.join(root, variant)
+
+def solve(root, variant, n=N):
+    case = os.path.join(root, variant if n == N else "%s_n%d" % (variant, n))
     if os.path.exists(case):
         shutil.rmtree(case)
     # No pictures or plots (tutorialPictures' business): the test's cost
     # is the two runs
     shutil.copytree(run.tutorial_dir("sphereImpact"), case,
                     ignore=shutil.ignore_patterns("render.py", "plot.py"))
-    run.run(["./Allrun", "-variant", variant, "-n", str(N)], case,
+    run.run(["./Allrun", "-variant", variant, "-n", str(n)], case,
             name="Allrun", timeout=testing.RUN_TIMEOUT)
     return case
 
@@ -131,6 +148,29 @@ def body():
                  " %+.3f (rigid elastic %+.3f, %+.3f)"
                  % ((r["momentumDrift"], r["ball1End"], r["ball2End"])
                     + exchange))
+
+    r = hertz.analyse(solve(root, "sphere", 8))
+    force, time = r["appliedForceError"], r["timeError"]
+    lines.append("sphere n 8: force the balls receive %+.2f %%, contact "
+                 "time %+.2f %% of the closed form, %d faces in contact at "
+                 "most, largest energy growth in a step %.1e E0, p_y drift "
+                 "%.1e |p0|" % (100 * force, 100 * time, r["maxFaces"],
+                                r["energyGrowth"], r["momentumDrift"]))
+    if abs(force) > TOLERANCE_8[0] or abs(time) > TOLERANCE_8[1]:
+        failures.append("sphere n 8: force %+.2f %%, contact time %+.2f %% "
+                        "(allowed %.0f %%, %.0f %%)"
+                        % (100 * force, 100 * time, 100 * TOLERANCE_8[0],
+                           100 * TOLERANCE_8[1]))
+    if r["maxFaces"] > MAX_FACES_8:
+        failures.append("sphere n 8: %d faces in contact (at most %d)"
+                        % (r["maxFaces"], MAX_FACES_8))
+    if r["energyGrowth"] > ENERGY_GROWTH_8:
+        failures.append("sphere n 8: the energy grew by %.2e E0 in a step "
+                        "(allowed %.1e)" % (r["energyGrowth"],
+                                            ENERGY_GROWTH_8))
+    if not r["released"] or r["momentumDrift"] > MOMENTUM_DRIFT:
+        failures.append("sphere n 8: not released, or p_y drift %.2e"
+                        % r["momentumDrift"])
     return testing.verdict(lines, failures)
 
 

@@ -165,6 +165,7 @@ void Foam::contactSurfaces::update
     vectorField f(nLocal);
     labelList slot(nLocal);
 
+    held_.setSize(patches_.size());
     forAll(patches_, s)
     {
         const fvPatch& patch = mesh_.boundary()[patches_[s]];
@@ -172,11 +173,13 @@ void Foam::contactSurfaces::update
         const labelUList& faceCells = patch.faceCells();
         const vectorField& Sf = patch.Sf();
         const scalarField& magSf = patch.magSf();
-        const vectorField& nodalForce =
+        const bodyContactFvPatchVectorField& condition =
             refCast<const bodyContactFvPatchVectorField>
             (
                 lm.boundaryField()[patches_[s]]
-            ).nodalForce();
+            );
+        const vectorField& nodalForce = condition.nodalForce();
+        held_[s] = condition.pointConstrained();
 
         forAll(faceCells, i)
         {
