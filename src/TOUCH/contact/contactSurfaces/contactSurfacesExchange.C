@@ -141,10 +141,15 @@ void Foam::contactSurfaces::exchange(volVectorField& lm, faceSums& sums)
                 // point of either face: on curved bodies the centres lag
                 // the surfaces; validation/sphereImpact/FINDINGS.md), and
                 // stays while compressive if both faces were in contact
+                // and, where the update holds the points, face each other
+                // (opposed: not a sliver of a neighbour)
                 pair.active =
                     pair.tN < 0
                  && (
-                        (wasInContact_[gi] && wasInContact_[gj])
+                        (
+                            wasInContact_[gi] && wasInContact_[gj]
+                         && opposed(gi, gj, pair.n)
+                        )
                      || pointGap(gi, gj, pair.n)
                      <= contactTouchingTolerance
                        *(Foam::sqrt(a_[gi]) + Foam::sqrt(a_[gj]))
