@@ -140,16 +140,15 @@ void Foam::contactSurfaces::exchange(volVectorField& lm, faceSums& sums)
                 // wall's tolerance of the faces' sizes (the lowest free
                 // point of either face: on curved bodies the centres lag
                 // the surfaces; validation/sphereImpact/FINDINGS.md), and
-                // stays while compressive if both faces were in contact
-                // and, where the update holds the points, face each other
-                // (opposed: not a sliver of a neighbour)
+                // stays while compressive if both faces were in contact.
+                // Where the update holds the points, only pairs whose
+                // faces face each other act (opposed: not a neighbour's
+                // sliver)
                 pair.active =
                     pair.tN < 0
+                 && opposed(gi, gj, pair.n)
                  && (
-                        (
-                            wasInContact_[gi] && wasInContact_[gj]
-                         && opposed(gi, gj, pair.n)
-                        )
+                        (wasInContact_[gi] && wasInContact_[gj])
                      || pointGap(gi, gj, pair.n)
                      <= contactTouchingTolerance
                        *(Foam::sqrt(a_[gi]) + Foam::sqrt(a_[gj]))

@@ -287,15 +287,16 @@ bool Foam::contactSurfaces::opposed
 ) const
 {
     // Where the update holds the points of faces in contact (compatible),
-    // a pair of two faces in contact stays only while one's centre lies
-    // over the other.  A face also overlaps by a sliver the neighbours of
-    // the face opposite it (every overlap is a pair); kept while both
-    // faces were in contact with anyone, such pairs held the points of two
-    // balls to their contact velocities as the contact released, and the
-    // energy grew in 237 steps at n = 8, by up to 1.1e-4 E0 in one (2 steps
-    // and 8.0e-6 E0 so; validation/sphereImpact/FINDINGS.md 9).  Where
-    // nothing holds the points (plain) every pair of two faces in contact
-    // stays
+    // a pair acts only while one face's centre lies over the other: every
+    // face has such a partner where its centre lies over the other
+    // surface, and the held points carry the force of the rest.  A face
+    // also overlaps by a sliver the neighbours of the face opposite it
+    // (every overlap is a pair); such pairs held the points of two balls
+    // to their tilted contact velocities, and the energy grew in 237 steps
+    // of the release at n = 8 (1.1e-4 E0 in one), in 121 of the loading at
+    // n = 12; with opposed pairs alone, in none (validation/sphereImpact/
+    // FINDINGS.md 9).  Where nothing holds the points (plain) every
+    // overlap acts: its traction is all the pair exchanges
     if (!(held_[slot_[gi]] || held_[slot_[gj]]))
     {
         return true;
