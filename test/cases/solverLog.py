@@ -2,7 +2,7 @@
 """The solver log: start-up summary, progress lines and final line.
 
     /usr/bin/python3 test/cases/solverLog.py [--n 8] [--end 0.3]
-                                             [--interval 1] [--attempts 2]
+                                             [--interval 1] [--attempts 3]
 
 Runs tutorials/twistingColumn on n x 6n x n cells (default 8 x 48 x 8, about
 15 s on one core) to t = end with the controlDict entry progressInterval 1
@@ -40,8 +40,10 @@ within 20 %:
 - against the actual remaining time, the lines after which the run went as
   fast as before, to 5 % (all of them on an idle machine).
 With fewer than half of the lines (or fewer than 3) at a steady speed the
-run is made again, up to --attempts times (default 2), and the summary says
-the machine was busy.
+run is made again, up to --attempts times (default 3), and the summary says
+the machine was busy.  A run with a late line or a remaining time off by
+more than 20 % is made again too (its other checks must pass): the test
+fails only if every run has such a fault, and names them all.
 Also, on the same column with 20 steps: progressInterval -1 stops touchFoam
 naming the controlDict, the entry and the valid values; without the entry
 (default 10 s) a vonMisesPlastic column on 2 ranks (metis) gives the global
@@ -73,6 +75,12 @@ def slack():
     makes single steps late, not the progress logic wrong)."""
     load = os.getloadavg()[0] / max(os.cpu_count() or 1, 1)
     return SLACK * max(1.0, load)
+class TimingFault(AssertionError):
+    """A check on wall-clock timing (a late line, a remaining time off):
+    another process taking the core can cause it, so the run is made again
+    before it counts."""
+
+
 ETA_TOL = 0.2         # relative error of a remaining time
 SPEED_TOL = 0.05      # speeds before and after a judged line agree
 
@@ -257,10 +265,14 @@ def check_progress(case, text, cells, interval):
     for k, ln in enumerate(lines):
         wall, step = float(ln["wall"]), int(ln["step"])
         gap = wall - previous_wall
-        if not interval - 0.011 <= gap <= interval + slack():
+        if gap < interval - 0.011:
             raise AssertionError("progress line %d at wall %.2f s, %.2f s "
-                                 "after the previous (interval %g)"
+                                 "after the previous: early (interval %g)"
                                  % (k + 1, wall, gap, interval))
+        if gap > interval + slack():
+            raise TimingFault("progress line %d at wall %.2f s, %.2f s "
+                              "after the previous: late (interval %g)"
+                              % (k + 1, wall, gap, interval))
         if abs(float(ln["last"]) - gap) > 0.011:
             raise AssertionError("progress line %d: 'last %s s', %.2f s "
                                  "since the previous" % (k + 1, ln["last"],
@@ -291,7 +303,7 @@ def check_progress(case, text, cells, interval):
                          float(ln["remaining"]), step))
         previous_wall, previous_step = wall, step
     if loop - previous_wall > interval + slack():
-        raise AssertionError("no progress line in the last %.2f s of the "
+        raise TimingFault("no progress line in the last %.2f s of the "
                              "loop" % (loop - previous_wall))
     if not etas:
         raise AssertionError("no progress line after 10 %% of the run with "
@@ -374,6 +386,29 @@ def plastic_parallel(root, args, cells):
         raise AssertionError("plastic column: %d steps, maxSteps 20" % steps)
 
 
+def judge_run(case, text, cells, interval, k):
+    """The progress lines of run k, then its remaining times: (errors,
+    steady ones, loop time, lines); TimingFault on a late line or an
+    estimate off by more than ETA_TOL."""
+    etas, loop, steps, n_lines = check_progress(case, text, cells, interval)
+    errors = eta_errors(etas, loop, steps)
+    steady = [e for e in errors if abs(e[4]) <= SPEED_TOL]
+    for e in errors:
+        if abs(e[3]) > ETA_TOL:
+            raise TimingFault(
+                "remaining time off by %+.1f %% at %.1f %% of the run "
+                "against the time at the speed so far (%+.1f %% against the "
+                "actual, the speed changed by %+.1f %%)"
+                % (100 * e[3], e[0], 100 * e[2], 100 * e[4]))
+    for e in steady:
+        if abs(e[2]) > ETA_TOL:
+            raise TimingFault(
+                "remaining time off by %+.1f %% at %.1f %% of the run, "
+                "%.2f s before the end, at a steady speed (%+.1f %%)"
+                % (100 * e[2], e[0], e[1], 100 * e[4]))
+    return errors, steady, loop, n_lines
+
+
 def body(args):
     root = testing.work_dir(NAME)
     cells = args.n * 6 * args.n * args.n
@@ -381,7 +416,7 @@ def body(args):
     bad_interval(root, args)
     plastic_parallel(root, args, cells)
 
-    attempts = []
+    attempts, faults = [], []
     for k in range(args.attempts):
         case = column(root, "run%d" % (k + 1), args,
                       {"progressInterval": args.interval})
@@ -389,27 +424,20 @@ def body(args):
         with open(os.path.join(case, "log.touchFoam")) as f:
             text = f.read()
         check_summary(text, case, cells)
-        etas, loop, steps, n_lines = check_progress(case, text, cells,
-                                                    args.interval)
-        errors = eta_errors(etas, loop, steps)
-        steady = [e for e in errors if abs(e[4]) <= SPEED_TOL]
-        for e in errors:
-            if abs(e[3]) > ETA_TOL:
-                raise AssertionError(
-                    "run %d: remaining time off by %+.1f %% at %.1f %% of "
-                    "the run against the time at the speed so far (%+.1f %% "
-                    "against the actual, the speed changed by %+.1f %%)"
-                    % (k + 1, 100 * e[3], e[0], 100 * e[2], 100 * e[4]))
-        for e in steady:
-            if abs(e[2]) > ETA_TOL:
-                raise AssertionError(
-                    "run %d: remaining time off by %+.1f %% at %.1f %% of "
-                    "the run, %.2f s before the end, at a steady speed "
-                    "(%+.1f %%)" % (k + 1, 100 * e[2], e[0], e[1],
-                                    100 * e[4]))
+        try:
+            errors, steady, loop, n_lines = judge_run(case, text, cells,
+                                                      args.interval, k + 1)
+        except TimingFault as fault:
+            # The logic checks before the fault passed; the timing is
+            # judged again on a new run
+            faults.append("run %d: %s" % (k + 1, fault))
+            continue
         attempts.append((len(steady), k + 1, errors, steady, loop, n_lines))
         if len(steady) >= max(3, len(errors) / 2):
             break
+    if not attempts:
+        raise AssertionError("every run late or off in its timing (%d runs):"
+                             " %s" % (len(faults), "; ".join(faults)))
     _, k, errors, steady, loop, n_lines = max(attempts)
 
     def worst(i, es):
@@ -420,7 +448,7 @@ def body(args):
                "remaining time after 10 %% of the run against the actual, "
                "%d lines of steady speed: %s; against the time at the speed "
                "so far, %d lines: worst %s"
-               % (cells, loop, n_lines, k, len(attempts), len(steady),
+               % (cells, loop, n_lines, k, len(attempts) + len(faults), len(steady),
                   " ".join("%+.0f%%" % (100 * e[2]) for e in steady),
                   len(errors), worst(3, errors)))
     if steady:
@@ -430,6 +458,8 @@ def body(args):
                     "%.0f %%)" % (100 * max(abs(e[4]) for e in errors)))
     if slack() > SLACK:
         summary += "; progress lateness allowed %.2f s (load)" % slack()
+    if faults:
+        summary += "; timing faults of earlier runs: %s" % "; ".join(faults)
     return summary
 
 
@@ -438,6 +468,6 @@ if __name__ == "__main__":
     parser.add_argument("--n", type=int, default=8)
     parser.add_argument("--end", type=float, default=0.3)
     parser.add_argument("--interval", type=float, default=1.0)
-    parser.add_argument("--attempts", type=int, default=2)
+    parser.add_argument("--attempts", type=int, default=3)
     args = parser.parse_args()
     sys.exit(testing.run_test(NAME, lambda: body(args)))
