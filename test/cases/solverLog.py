@@ -448,7 +448,8 @@ def body(args):
                "remaining time after 10 %% of the run against the actual, "
                "%d lines of steady speed: %s; against the time at the speed "
                "so far, %d lines: worst %s"
-               % (cells, loop, n_lines, k, len(attempts) + len(faults), len(steady),
+               % (cells, loop, n_lines, k, len(attempts) + len(faults),
+                  len(steady),
                   " ".join("%+.0f%%" % (100 * e[2]) for e in steady),
                   len(errors), worst(3, errors)))
     if steady:
