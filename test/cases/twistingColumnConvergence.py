@@ -11,7 +11,7 @@ at least 0.25 m from it (postprocess.column_twist, unwrapped).  The
 reference is the converged twist of
 validation/twistingColumn/reference.json, established independently of
 this test from both codes' Richardson extrapolations on finer meshes
-(touchFoam to n = 32, CalculiX C3D8R and C3D8 to n = 24).  Measured
+(touchFoam to n = 48, CalculiX C3D8R and C3D8 to n = 24).  Measured
 2026-12-04: 306.9 / 324.8 / 329.6 deg, observed order 1.88, Richardson
 331.4.  The same meshes at nu = 0.495 check that the scheme does not lock
 (issue 35, acceptance 1): measured 2026-12-06 322.2 / 333.4 / 336.4 deg,

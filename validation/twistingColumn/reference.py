@@ -30,6 +30,11 @@ analyse       each code's (and element's) finest three meshes in the
               when its order is borrowed); writes reference.json.  Runs at
               another nu are analysed alike and reported under 'otherNu'
               with each run's largest energy growth in a step (/ E0).
+              Printed and recorded beside them ('finestFits'): the fit
+              T = T* - C n^-p through every three of the four finest
+              meshes, any ratios (fit_three): the order on the finest
+              meshes, where the coarse ones are short of the asymptotic
+              range.
 
 The twist is the mean rotation about +Y of the top-face points at least
 0.25 m from the axis (both codes the same points and formula).  Runs go
@@ -159,6 +164,50 @@ def triplets(values):
     return out
 
 
+def fit_three(meshes, twists):
+    """(order p, extrapolation T*) of T(n) = T* - C n^-p through three
+    meshes n1 < n2 < n3 of any ratios: p solves
+    (n1^-p - n2^-p) / (n2^-p - n3^-p) = (T2 - T1) / (T3 - T2), whose left
+    side rises with p (bisection on 0.05 < p < 10); (None, None) where the
+    differences change sign or p leaves that range.  For n, 2n, 4n it is
+    the ratio-2 formula of triplets()."""
+    (n1, n2, n3), (t1, t2, t3) = meshes, twists
+    if (t2 - t1) * (t3 - t2) <= 0:
+        return None, None
+    r = (t2 - t1) / (t3 - t2)
+
+    def excess(p):
+        return (n1 ** -p - n2 ** -p) / (n2 ** -p - n3 ** -p) - r
+
+    low, high = 0.05, 10.0
+    if excess(low) > 0 or excess(high) < 0:
+        return None, None
+    for _ in range(200):
+        mid = 0.5 * (low + high)
+        if excess(mid) < 0:
+            low = mid
+        else:
+            high = mid
+    p = 0.5 * (low + high)
+    c = (t2 - t1) / (n1 ** -p - n2 ** -p)
+    return p, t3 + c * n3 ** -p
+
+
+def finest_fits(values, count=4):
+    """Every three of the finest `count` meshes, [n1, n2, n3, p, T*],
+    finest last (fit_three; None where it has none)."""
+    ns = sorted(values)[-count:]
+    out = []
+    for i in range(len(ns)):
+        for j in range(i + 1, len(ns)):
+            for k in range(j + 1, len(ns)):
+                m = (ns[i], ns[j], ns[k])
+                p, ext = fit_three(m, [values[n] for n in m])
+                out.append(list(m) + [p, ext])
+    out.sort(key=lambda f: (f[2], f[1], f[0]))
+    return out
+
+
 def richardson(values, borrowed_order=None):
     """(order, extrapolation, its uncertainty, own order?) from {n:
     twist}: the finest triplet in the ratio 2 (uncertainty: the largest
@@ -219,6 +268,7 @@ def analyse():
         group[code] = {"twist": twists, "order": p,
                        "nu": next(iter(runs.values())).get("nu", NU),
                                  "triplets": triplets(twists),
+                                 "finestFits": finest_fits(twists),
                                  "extrapolation": ext, "uncertainty": half,
                                  "ownOrder": own,
                                  "wall": {n: r["wall"]
@@ -256,6 +306,11 @@ def analyse():
             print("    %d / %d / %d: order %s, extrapolated %s" % (
                 n, 2 * n, 4 * n, "%.2f" % p if p else "-",
                 "%.2f" % t if t else "-"))
+        if len(e["twist"]) >= 4:
+            for n1, n2, n3, p, t in e["finestFits"]:
+                print("    fit %d / %d / %d: order %s, extrapolated %s" % (
+                    n1, n2, n3, "%.2f" % p if p else "-",
+                    "%.2f" % t if t else "-"))
     if ends:
         print("band %.2f - %.2f, middle %.2f" % (low, high,
                                                  result["reference"]))
