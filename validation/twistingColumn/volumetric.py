@@ -8,9 +8,9 @@ N x 6N x N cells to 0.1 s, the TOUCH entries KEY=VALUE changed (e.g.
 nodalAveraging=cellVolume).  Prints per mesh the twist (postprocess.column_twist
 at 0.1 s), the largest energy growth in a step / E0, the energy kept and
 the wall time, then the order and Richardson extrapolation through the
-last three meshes (fit T + C N^-p) and the errors against 332.2 deg
-(issue 35).  Results in runs/volumetric/LABEL.json.  FINDINGS.md,
-"The volume of twisted cells".
+last three meshes (fit T + C N^-p) and the errors against the converged
+twist of reference.json (issue 35).  Results in
+runs/volumetric/LABEL.json.  FINDINGS.md, "The volume of twisted cells".
 """
 import json
 import math
@@ -24,30 +24,19 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 from touchfoam import cases, monitor, postprocess, run  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-REFERENCE = 332.2
+sys.path.insert(0, HERE)
+from reference import fit_three  # noqa: E402
+
+#: the converged twist [deg] (reference.py analyse)
+with open(os.path.join(HERE, "reference.json")) as _f:
+    REFERENCE = round(json.load(_f)["reference"], 2)
 
 
 def fit(ns, T):
-    """Order and limit of T + C n^-p through three meshes (bisection)."""
-    (n1, n2, n3), (t1, t2, t3) = ns[-3:], T[-3:]
-    if (t2 - t1) * (t3 - t2) <= 0:
-        return float("nan"), float("nan")
-    r = (t2 - t1) / (t3 - t2)
-
-    def g(p):
-        return (n1 ** -p - n2 ** -p) / (n2 ** -p - n3 ** -p) - r
-    lo, hi = 0.05, 8.0
-    if g(lo) * g(hi) > 0:
-        return float("nan"), float("nan")
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if g(lo) * g(mid) <= 0:
-            hi = mid
-        else:
-            lo = mid
-    p = 0.5 * (lo + hi)
-    C = (t3 - t2) / (n2 ** -p - n3 ** -p)
-    return p, t3 + C * n3 ** -p
+    """Order and limit of T + C n^-p through the last three meshes
+    (reference.fit_three; nan where it has none)."""
+    p, limit = fit_three(ns[-3:], T[-3:])
+    return (float("nan"), float("nan")) if p is None else (p, limit)
 
 
 def main():
