@@ -99,9 +99,13 @@ void Foam::kinematicPointConstraints::formProjectors()
             continue;
         }
 
-        const label start = mesh_.boundary()[patchi].start();
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        const label start = patch.start();
         const tensorField& free = declaredFree_[patchi];
         const vectorField& velocity = declaredVelocity_[patchi];
+        const boolList* held =
+            declaredHeld_.set(patchi) ? &declaredHeld_[patchi] : nullptr;
+        const faceList& localFaces = patch.patch().localFaces();
 
         // A smooth surface's faces go to its own sums
         const bool surface = surface_[patchi];
@@ -113,9 +117,17 @@ void Foam::kinematicPointConstraints::formProjectors()
         forAll(free, i)
         {
             const tensor fixed(tensor::I - free[i]);
+            const face& f = faces[start + i];
 
-            for (const label pointi : faces[start + i])
+            forAll(f, k)
             {
+                // Not at the points the patch does not hold
+                if (held && !(*held)[localFaces[i][k]])
+                {
+                    continue;
+                }
+
+                const label pointi = f[k];
                 const label b = boundaryIndex_[pointi];
                 sum[b] += fixed;
                 sumVelocity[b] += fixed & velocity[i];
@@ -207,6 +219,7 @@ Foam::kinematicPointConstraints::kinematicPointConstraints(const fvMesh& mesh)
     boundaryIndex_(mesh.nPoints(), -1),
     declaredFree_(mesh.boundary().size()),
     declaredVelocity_(mesh.boundary().size()),
+    declaredHeld_(mesh.boundary().size()),
     declaredNow_(mesh.boundary().size(), false),
     permanent_(mesh.boundary().size(), false),
     surface_(mesh.boundary().size(), false),
@@ -294,7 +307,8 @@ void Foam::kinematicPointConstraints::add
     const fvPatch& patch,
     const tensorField& free,
     const vectorField& velocity,
-    const bool surface
+    const bool surface,
+    const boolList* held
 )
 {
     const label patchi = patch.index();
@@ -302,6 +316,20 @@ void Foam::kinematicPointConstraints::add
     if (surface != surface_[patchi])
     {
         surface_[patchi] = surface;
+        changed_ = true;
+    }
+
+    if (!held)
+    {
+        if (declaredHeld_.set(patchi))
+        {
+            declaredHeld_.set(patchi, nullptr);
+            changed_ = true;
+        }
+    }
+    else if (!declaredHeld_.set(patchi) || declaredHeld_[patchi] != *held)
+    {
+        declaredHeld_.set(patchi, new boolList(*held));
         changed_ = true;
     }
 
@@ -345,6 +373,7 @@ void Foam::kinematicPointConstraints::finalise()
         {
             declaredFree_.set(patchi, nullptr);
             declaredVelocity_.set(patchi, nullptr);
+            declaredHeld_.set(patchi, nullptr);
             changed_ = true;
         }
     }

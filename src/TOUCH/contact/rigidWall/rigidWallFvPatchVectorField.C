@@ -40,6 +40,17 @@ namespace Foam
         entryLimits::oneOf({"faceMean", "lowestFreePoint"})
     );
 
+    static const declaredEntry<word> wallHoldEntry
+    (
+        "0/U (or 0/lm) boundaryField, type rigidWall", "hold",
+        "which points of a face in contact the wall holds (compatible"
+        " update): faces (all of them, from the stage the face enters) or"
+        " touchingPoints (each from the stage it reaches the wall; curved"
+        " bodies)",
+        "-", word("faces"),
+        entryLimits::oneOf({"faces", "touchingPoints"})
+    );
+
     static const describedEntry wallContactEntry
     (
         "0/U (or 0/lm) boundaryField, type rigidWall", "contact",
@@ -237,6 +248,9 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     normal_(Zero),
     velocity_(new Function1Types::Constant<vector>("velocity", Zero)),
     lowestFreePoint_(false),
+    holdTouching_(false),
+    pointHeld_(),
+    stageWallPoint_(Zero),
     contact_(p.size(), false),
     stepContact_(contact_),
     earlierContact_(contact_),
@@ -263,13 +277,16 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
         wordList
         ({
             "point", "normal", "velocity", "velocityCoeffs", "touching",
-            "contact", "friction", "slip"
+            "hold", "contact", "friction", "slip"
         })
     ),
     point_(wallPointEntry.read(dict)),
     normal_(readNormal(p, dict)),
     velocity_(readVelocity(p, dict)),
     lowestFreePoint_(wallTouchingEntry.read(dict) == "lowestFreePoint"),
+    holdTouching_(wallHoldEntry.read(dict) == "touchingPoints"),
+    pointHeld_(),
+    stageWallPoint_(Zero),
     contact_(readContact(p, dict)),
     stepContact_(contact_),
     earlierContact_(contact_),
@@ -298,6 +315,9 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     normal_(ptf.normal_),
     velocity_(ptf.velocity_.clone()),
     lowestFreePoint_(ptf.lowestFreePoint_),
+    holdTouching_(ptf.holdTouching_),
+    pointHeld_(),
+    stageWallPoint_(ptf.stageWallPoint_),
     // Faces the mapper does not reach (reconstructPar builds the patch
     // from one processor's part, the rest comes by rmap) are not in
     // contact, rather than left unset: an unset value compared in toBool
@@ -333,6 +353,9 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     normal_(ptf.normal_),
     velocity_(ptf.velocity_.clone()),
     lowestFreePoint_(ptf.lowestFreePoint_),
+    holdTouching_(ptf.holdTouching_),
+    pointHeld_(ptf.pointHeld_),
+    stageWallPoint_(ptf.stageWallPoint_),
     contact_(ptf.contact_),
     stepContact_(ptf.stepContact_),
     earlierContact_(ptf.earlierContact_),
@@ -357,6 +380,9 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     normal_(ptf.normal_),
     velocity_(ptf.velocity_.clone()),
     lowestFreePoint_(ptf.lowestFreePoint_),
+    holdTouching_(ptf.holdTouching_),
+    pointHeld_(ptf.pointHeld_),
+    stageWallPoint_(ptf.stageWallPoint_),
     contact_(ptf.contact_),
     stepContact_(ptf.stepContact_),
     earlierContact_(ptf.earlierContact_),
@@ -424,6 +450,10 @@ void Foam::rigidWallFvPatchVectorField::write(Ostream& os) const
     if (lowestFreePoint_)
     {
         os.writeEntry(wallTouchingEntry.name(), word("lowestFreePoint"));
+    }
+    if (holdTouching_)
+    {
+        os.writeEntry(wallHoldEntry.name(), word("touchingPoints"));
     }
     toScalar(contact_).writeEntry("contact", os);
 

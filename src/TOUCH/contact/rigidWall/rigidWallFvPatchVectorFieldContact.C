@@ -90,14 +90,13 @@ Foam::vector Foam::rigidWallFvPatchVectorField::wallPoint
 }
 
 
-Foam::tmp<Foam::scalarField> Foam::rigidWallFvPatchVectorField::lowestFreeGaps
+Foam::tmp<Foam::scalarField> Foam::rigidWallFvPatchVectorField::pointGaps
 (
     const vector& wallPoint
 ) const
 {
     const polyMesh& mesh = patch().boundaryMesh().mesh();
     const labelList& meshPoints = patch().patch().meshPoints();
-    const faceList& localFaces = patch().patch().localFaces();
 
     // The points' displacement is the solver's pointD
     const word pointDName("pointD");
@@ -105,46 +104,100 @@ Foam::tmp<Foam::scalarField> Foam::rigidWallFvPatchVectorField::lowestFreeGaps
     {
         FatalErrorInFunction
             << "Patch " << patch().name() << ": 'touching lowestFreePoint'"
-            << " needs the point displacement field " << pointDName
-            << " (touchFoam's)" << exit(FatalError);
+            << " and 'hold touchingPoints' need the point displacement"
+            << " field " << pointDName << " (touchFoam's)" << exit(FatalError);
     }
     const vectorField& pointU =
         db().lookupObject<pointVectorField>(pointDName).primitiveField();
     const pointField& X = mesh.points();
 
-    // The points some face in contact holds, on any rank
-    boolList held(meshPoints.size(), false);
+    tmp<scalarField> tgaps(new scalarField(meshPoints.size()));
+    scalarField& gaps = tgaps.ref();
+    forAll(meshPoints, pointj)
+    {
+        const label pointi = meshPoints[pointj];
+        gaps[pointj] = ((X[pointi] + pointU[pointi]) - wallPoint) & normal_;
+    }
+
+    return tgaps;
+}
+
+
+Foam::boolList Foam::rigidWallFvPatchVectorField::pointsOfContactFaces() const
+{
+    const polyMesh& mesh = patch().boundaryMesh().mesh();
+    const labelList& meshPoints = patch().patch().meshPoints();
+    const faceList& localFaces = patch().patch().localFaces();
+
+    boolList inContact(meshPoints.size(), false);
     forAll(contact_, facei)
     {
         if (contact_[facei])
         {
             for (const label pointj : localFaces[facei])
             {
-                held[pointj] = true;
+                inContact[pointj] = true;
             }
         }
     }
-    syncTools::syncPointList(mesh, meshPoints, held, orEqOp<bool>(), false);
+    syncTools::syncPointList
+    (
+        mesh, meshPoints, inContact, orEqOp<bool>(), false
+    );
 
-    tmp<scalarField> tgaps(new scalarField(localFaces.size(), GREAT));
-    scalarField& gaps = tgaps.ref();
+    return inContact;
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::rigidWallFvPatchVectorField::lowestFreeGaps
+(
+    const vector& wallPoint
+) const
+{
+    const faceList& localFaces = patch().patch().localFaces();
+    const scalarField gaps(pointGaps(wallPoint));
+
+    // The points some face in contact holds, on any rank: every point of
+    // such a face, or with hold touchingPoints those that reached the wall
+    const boolList held
+    (
+        holdTouching_ ? pointHeld_ : pointsOfContactFaces()
+    );
+
+    tmp<scalarField> tlowest(new scalarField(localFaces.size(), GREAT));
+    scalarField& lowest = tlowest.ref();
     forAll(localFaces, facei)
     {
         for (const label pointj : localFaces[facei])
         {
             if (!held[pointj])
             {
-                const label pointi = meshPoints[pointj];
-                gaps[facei] = min
-                (
-                    gaps[facei],
-                    ((X[pointi] + pointU[pointi]) - wallPoint) & normal_
-                );
+                lowest[facei] = min(lowest[facei], gaps[pointj]);
             }
         }
     }
 
-    return tgaps;
+    return tlowest;
+}
+
+
+void Foam::rigidWallFvPatchVectorField::updateHeld(const vector& wallPoint)
+{
+    if (!holdTouching_)
+    {
+        return;
+    }
+
+    // One tolerance for the patch, the same on every rank
+    const scalar tolerance =
+        touchingTolerance*gMax(sqrt(patch().magSf()));
+
+    const scalarField gaps(pointGaps(wallPoint));
+    pointHeld_ = pointsOfContactFaces();
+    forAll(pointHeld_, pointj)
+    {
+        pointHeld_[pointj] = pointHeld_[pointj] && gaps[pointj] <= tolerance;
+    }
 }
 
 
@@ -217,6 +270,10 @@ void Foam::rigidWallFvPatchVectorField::updateActiveSet
     const vector wallPoint(this->wallPoint(s.time));
     const scalar wallNormalSpeed = velocity_->value(s.time) & normal_;
     const scalarField& magSf = patch().magSf();
+    stageWallPoint_ = wallPoint;
+
+    // The points the last decision holds, at their present positions
+    updateHeld(wallPoint);
 
     if (s.stage == 1)
     {
@@ -275,6 +332,8 @@ void Foam::rigidWallFvPatchVectorField::updateActiveSet
         updateFriction(s);
     }
 
+    updateHeld(wallPoint);
+
     stepForce_ += stageForce_;
 }
 
@@ -328,6 +387,8 @@ Foam::label Foam::rigidWallFvPatchVectorField::releaseTensile
             ++released;
         }
     }
+
+    updateHeld(stageWallPoint_);
 
     return released;
 }

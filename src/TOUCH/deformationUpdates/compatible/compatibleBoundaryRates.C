@@ -34,6 +34,17 @@ static inline void spreadToPoints
     }
 }
 
+//- The share of a face's points that are held
+static inline scalar heldShare(const face& localFace, const boolList& held)
+{
+    label n = 0;
+    for (const label pointj : localFace)
+    {
+        n += held[pointj];
+    }
+    return scalar(n)/localFace.size();
+}
+
 } // End namespace Foam
 
 
@@ -73,11 +84,15 @@ void Foam::deformationUpdates::compatible::addBoundaryRate
                 reference, faceFree_[patchi], faceVelocity_[patchi]
             );
             // (a contact surface's facets at a point combined into its
-            // normal: kinematicPointConstraints::surfaceFixed)
+            // normal: kinematicPointConstraints::surfaceFixed; a wall that
+            // holds only the points that reached it: heldPoints)
+            const boolList* held = condition.heldPoints();
             constraints_.add
             (
-                patch, free, faceVelocity_[patchi], condition.contactSurface()
+                patch, free, faceVelocity_[patchi], condition.contactSurface(),
+                held
             );
+            const faceList& localFaces = patch.patch().localFaces();
 
             // The fixed directions are damped towards the prescribed
             // momentum with the share of the cell's departure from it that
@@ -119,28 +134,35 @@ void Foam::deformationUpdates::compatible::addBoundaryRate
 
             // The prescribed traction of the free directions, and the
             // upwind damping of the fixed ones; their central traction is
-            // the constraint's reaction
+            // the constraint's reaction.  Where only some points of a face
+            // are held, the fixed directions are the face's at those points
+            // alone: the damping takes their share of the face, and at the
+            // others the central traction stays the interior's, as at a
+            // free face
             const vectorField& tC = tC_[patchi];
             const scalarField& magSf = patch.magSf();
+            vectorField force(faceCells.size());
             vector faceForce(Zero);
             forAll(faceCells, i)
             {
                 const tensor fixed(tensor::I - free[i]);
-                const vector force((tC[i] - (fixed & state.t[i]))*magSf[i]);
-                lmRate[faceCells[i]] += force;
-                faceForce += force;
+                force[i] =
+                    held
+                  ? (
+                        (free[i] & tC[i])
+                      + heldShare(localFaces[i], *held)
+                       *(fixed & (tC[i] - state.t[i]))
+                    )*magSf[i]
+                  : (tC[i] - (fixed & state.t[i]))*magSf[i];
+                lmRate[faceCells[i]] += force[i];
+                faceForce += force[i];
             }
             faceForce_[patchi] = faceForce;
 
             // Per face, for a condition released on the force applied
             if (releaseFaceForce_.set(patchi))
             {
-                vectorField& force = releaseFaceForce_[patchi];
-                forAll(faceCells, i)
-                {
-                    const tensor fixed(tensor::I - free[i]);
-                    force[i] = (tC[i] - (fixed & state.t[i]))*magSf[i];
-                }
+                releaseFaceForce_[patchi] = force;
             }
 
             // The torque of a wall is that of the force it applies: the
@@ -157,22 +179,46 @@ void Foam::deformationUpdates::compatible::addBoundaryRate
                 forAll(faceCells, i)
                 {
                     const tensor fixed(tensor::I - free[i]);
-                    torque -= state.x[i] ^ ((fixed & state.t[i])*magSf[i]);
+                    torque -=
+                        state.x[i]
+                      ^ (
+                            held
+                          ? tC[i]*magSf[i] - force[i]
+                          : (fixed & state.t[i])*magSf[i]
+                        );
                 }
             }
 
-            // The reconstructed traction against the condition's
+            // The reconstructed traction against the condition's: at a
+            // point the face does not hold, against its free part alone
             if (pointUpwinding_ > 0)
             {
                 const faceList& faces = faces_.mesh().faces();
                 forAll(faceCells, i)
                 {
-                    spreadToPoints
+                    const face& f = faces[patch.start() + i];
+                    if (!held)
+                    {
+                        spreadToPoints
+                        (
+                            f, magSf[i]*(state.t[i] - tC[i]),
+                            reconstructedForce_
+                        );
+                        continue;
+                    }
+                    const vector atHeld
                     (
-                        faces[patch.start() + i],
-                        magSf[i]*(state.t[i] - tC[i]),
-                        reconstructedForce_
+                        magSf[i]*(state.t[i] - tC[i])/f.size()
                     );
+                    const vector atFree
+                    (
+                        magSf[i]*(state.t[i] - (free[i] & tC[i]))/f.size()
+                    );
+                    forAll(f, k)
+                    {
+                        reconstructedForce_[f[k]] +=
+                            (*held)[localFaces[i][k]] ? atHeld : atFree;
+                    }
                 }
             }
         },

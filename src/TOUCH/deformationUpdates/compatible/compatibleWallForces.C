@@ -127,6 +127,7 @@ bool Foam::deformationUpdates::compatible::releaseTensileFaces()
         const labelList& meshPoints = patch.patch().meshPoints();
         const faceList& localFaces = patch.patch().localFaces();
         const tensorField& free = faceFree_[patchi];
+        const boolList* held = condition.heldPoints();
 
         // Per point of the patch, the number of its faces that fix a
         // direction there, on all ranks (every rank takes part in the
@@ -138,7 +139,10 @@ bool Foam::deformationUpdates::compatible::releaseTensileFaces()
             {
                 for (const label pointj : localFaces[i])
                 {
-                    ++holding[pointj];
+                    if (!held || (*held)[pointj])
+                    {
+                        ++holding[pointj];
+                    }
                 }
             }
         }
@@ -157,6 +161,10 @@ bool Foam::deformationUpdates::compatible::releaseTensileFaces()
             {
                 for (const label pointj : localFaces[i])
                 {
+                    if (held && !(*held)[pointj])
+                    {
+                        continue;
+                    }
                     const label pointi = meshPoints[pointj];
                     force[i] +=
                         (
@@ -205,6 +213,7 @@ void Foam::deformationUpdates::compatible::reportWallForces
         const labelList& meshPoints = patch.patch().meshPoints();
         const faceList& localFaces = patch.patch().localFaces();
         const tensorField& free = faceFree_[patchi];
+        const boolList* held = condition.heldPoints();
 
         // Sized on first use, for the patches of such a condition alone
         if (pointMarks_.empty())
@@ -226,7 +235,10 @@ void Foam::deformationUpdates::compatible::reportWallForces
             {
                 for (const label pointj : localFaces[i])
                 {
-                    fixingFace[pointj] = i;
+                    if (!held || (*held)[pointj])
+                    {
+                        fixingFace[pointj] = i;
+                    }
                 }
             }
         }
@@ -252,7 +264,10 @@ void Foam::deformationUpdates::compatible::reportWallForces
             {
                 for (const label pointj : localFaces[i])
                 {
-                    ownSum[pointj] += fixed;
+                    if (!held || (*held)[pointj])
+                    {
+                        ownSum[pointj] += fixed;
+                    }
                 }
             }
         }
