@@ -323,12 +323,12 @@ void Foam::rigidWallFvPatchVectorField::updateActiveSet
         }
     }
 
+    if (!updateChecked_ && (holdTouching_ || !friction_->frictionless()))
+    {
+        checkUpdate();
+    }
     if (!friction_->frictionless())
     {
-        if (!updateChecked_)
-        {
-            checkUpdate();
-        }
         updateFriction(s);
     }
 

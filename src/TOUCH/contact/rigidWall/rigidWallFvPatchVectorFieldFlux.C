@@ -112,6 +112,22 @@ void Foam::rigidWallFvPatchVectorField::checkUpdate()
         controls.getOrDefault<word>("FUpdate", "compatible")
     );
 
+    // hold touchingPoints is the compatible update's: the others move a
+    // face's points by its own constraint, all of them
+    if (holdTouching_ && update != "compatible")
+    {
+        WarningInFunction
+            << "Patch " << patch().name() << ": 'hold touchingPoints' acts"
+            << " with FUpdate compatible only; with FUpdate " << update
+            << " (" << controls.name() << ") a face in contact holds all"
+            << " its points, as with 'hold faces'" << endl;
+    }
+
+    if (friction_->frictionless())
+    {
+        return;
+    }
+
     if (update == "compatible")
     {
         FatalIOErrorInFunction(controls)
