@@ -377,6 +377,19 @@ void Foam::deformationUpdates::compatible::setContactNodalForces()
 }
 
 
+Foam::scalar Foam::deformationUpdates::compatible::contactWeight
+(
+    const label celli,
+    const scalar magSf
+) const
+{
+    // One material: the area alone, the same shares as the impedances'
+    return law_.uniformMaterial()
+      ? magSf
+      : magSf*law_.rho(celli)*law_.Up(celli);
+}
+
+
 void Foam::deformationUpdates::compatible::balanceContactForces
 (
     vectorField& lmRate
@@ -389,7 +402,7 @@ void Foam::deformationUpdates::compatible::balanceContactForces
 
     const fvMesh& mesh = faces_.mesh();
     vector imbalance(Zero);
-    scalar area = 0;
+    scalar weightSum = 0;
 
     forAll(mesh.boundary(), patchi)
     {
@@ -402,21 +415,22 @@ void Foam::deformationUpdates::compatible::balanceContactForces
         const bodyContactFvPatchVectorField& condition =
             refCast<const bodyContactFvPatchVectorField>(pf);
         const scalarField& magSf = condition.patch().magSf();
+        const labelUList& faceCells = condition.patch().faceCells();
 
         imbalance += condition.stageForce();
         forAll(condition.touching(), i)
         {
             if (condition.touching()[i])
             {
-                area += magSf[i];
+                weightSum += contactWeight(faceCells[i], magSf[i]);
             }
         }
     }
 
     reduce(imbalance, sumOp<vector>());
-    reduce(area, sumOp<scalar>());
+    reduce(weightSum, sumOp<scalar>());
 
-    if (area <= 0)
+    if (weightSum <= 0)
     {
         return;
     }
@@ -439,7 +453,11 @@ void Foam::deformationUpdates::compatible::balanceContactForces
         {
             if (condition.touching()[i])
             {
-                const vector correction(-(magSf[i]/area)*imbalance);
+                const vector correction
+                (
+                    -(contactWeight(faceCells[i], magSf[i])/weightSum)
+                   *imbalance
+                );
                 lmRate[faceCells[i]] += correction;
                 taken += correction;
             }
