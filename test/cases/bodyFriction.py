@@ -29,7 +29,14 @@ Asserted:
     monitor's, current cell centres) constant to 1e-10 |L_A(0)|
     (L_A(0) = block A's about the origin; the bodies' L add up to
     -0.05 m |p_A|/sqrt 2), the total energy (kinetic + strain) never grows
-    (1e-12 E0 per step) and the numerical dissipation stays >= 0;
+    (1e-12 E0 per step) and the numerical dissipation stays >= 0 and
+    holds the exchange's loss: boundaryWork stays 0 (only the contact
+    acts, and its two sides' works are an exchange, not the boundaries'
+    work; until 2026-12-07 the monitor booked the exchange's loss there,
+    -4.4e-3 E0 frictionless) and numericalDissipation
+    equals the bodies' numericalDissipation(<body>) plus the loss,
+    -(boundaryWork(faceA) + boundaryWork(faceB)) - frictionDissipation,
+    to 1e-12 E0;
   - mu = 0: lm, F, D and pointD at every written time equal the
     frictionless run's byte for byte (the internal fields: the friction
     run's U carries its friction and slip entries);
@@ -256,6 +263,19 @@ def invariants(case, label, failures, lines):
     if np.min(num) < -1e-12 * e[0]:
         failures.append("%s: numerical dissipation %.2e E0 < 0"
                         % (label, np.min(num) / e[0]))
+    work = np.max(np.abs(m["boundaryWork"])) / e[0]
+    if work > 1e-12:
+        failures.append("%s: boundaryWork %.2e E0, not 0: the contact's "
+                        "exchange booked as work" % (label, work))
+    loss = -(m["boundaryWork(faceA)"] + m["boundaryWork(faceB)"]) \
+        - (m["frictionDissipation"] if "frictionDissipation" in m else 0)
+    bodies = sum(m[c] for c in m if c.startswith("numericalDissipation("))
+    booked = np.max(np.abs(num - bodies - loss)) / e[0]
+    lines.append("%s: exchange loss %.2e E0 in numericalDissipation "
+                 "(to %.0e)" % (label, loss[-1] / e[0], booked))
+    if booked > 1e-12:
+        failures.append("%s: numericalDissipation is not the bodies' plus "
+                        "the exchange's loss (%.2e E0 off)" % (label, booked))
     return m
 
 

@@ -9,6 +9,7 @@ License
 #include "declaredEntry.H"
 #include "touchSolid.H"
 #include "rigidWallFvPatchVectorField.H"
+#include "bodyContactFvPatchVectorField.H"
 #include "emptyFvPatch.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -59,6 +60,28 @@ Foam::labelList Foam::functionObjects::solidMonitor::findWallPatches() const
         }
     }
     return labelList(std::move(walls));
+}
+
+
+Foam::boolList
+Foam::functionObjects::solidMonitor::findExchangePatches() const
+{
+    boolList exchange(workPatches_.size(), false);
+    if (!mesh_.foundObject<touchSolid>(touchSolid::typeName))
+    {
+        return exchange;
+    }
+
+    const touchSolid& solid =
+        mesh_.lookupObject<touchSolid>(touchSolid::typeName);
+    forAll(workPatches_, i)
+    {
+        exchange[i] = isA<bodyContactFvPatchVectorField>
+        (
+            solid.lm().boundaryField()[workPatches_[i]]
+        );
+    }
+    return exchange;
 }
 
 
@@ -247,6 +270,7 @@ Foam::functionObjects::solidMonitor::solidMonitor
     friction_(false),
     bodies_(mesh_),
     workPatches_(findWorkPatches()),
+    exchangePatch_(findExchangePatches()),
     E0_(0),
     bodyE0_(),
     bodyPlastic0_(),
@@ -359,7 +383,19 @@ bool Foam::functionObjects::solidMonitor::execute()
     // The friction between bodies, out of the boundaries' work
     const scalar friction =
         friction_ ? -returnReduce(account.frictionWork(), sumOp<scalar>()) : 0;
-    const scalar work = sum(bodyWork) + friction;
+
+    // The boundaries' work, without the contact between bodies: its two
+    // sides exchange energy and do no net work, so what their works do
+    // not cancel beyond the friction's is the exchange's numerical loss,
+    // which the remainder below then holds
+    scalar work = 0;
+    forAll(patchWork, i)
+    {
+        if (!exchangePatch_[i])
+        {
+            work += patchWork[i];
+        }
+    }
     const scalar plastic =
         dissipates_ ? gSum(cellPlasticWork()()) - plastic0_ : 0;
     const scalar numerical =
