@@ -24,7 +24,10 @@ with FUpdate compatible (the default) and plain:
   every one   total momentum constant to 1e-12 of the bodies' |p0|, the
               energy never grows (1e-12 E0 per step), no contact pulls
               (most tensile traction of a face in contact < 0) and
-              the penetration below 5 % of a face's size;
+              the penetration below 5 % of a face's size; the
+              compatible runs do not warn that the two sides' forces
+              part (their faces match, or are flat: test stiffPartner
+              has the warning);
   restart     equal (compatible) stopped at 1 ms in contact and
               continued: lm, F, sigma at 2 and 3 ms those of the
               uninterrupted run bit for bit (the active set is written
@@ -241,6 +244,17 @@ def body():
     for update in ("compatible", "plain"):
         lines.append(nonmatching(root, failures, update))
     lines.append(nonmatching(root, failures, "compatible", (3, 5)))
+    warned = []
+    for name in sorted(os.listdir(root)):
+        log = os.path.join(root, name, "log.touchFoam")
+        if "compatible" in name and os.path.exists(log):
+            with open(log) as f:
+                if "sides' forces of the contact between bodies" in f.read():
+                    warned.append(name)
+    if warned:
+        failures.append("the two sides' forces part (warning) in %s"
+                        % ", ".join(warned))
+    lines.append("no imbalance warning in the compatible runs")
     return testing.verdict(lines, failures)
 
 

@@ -26,7 +26,10 @@ Asserted, every step:
     the symmetric planes of the quarter model push along x and z only);
 and that the case is what it should be: the impedance ratio 1000, and
 the number of contact faces grows after the first contact (the entry of
-further faces is what this tests).
+further faces is what this tests).  The two sides hold different areas
+here (the ball's pole face is 1.21 times the plate face under it), so
+the run must warn once, naming both patches, that their forces part (by
+19 % at the first step).
 Work folder: test/runs/stiffPartner/.
 """
 
@@ -105,7 +108,15 @@ def body():
     (_, rho1, e1), (_, rho2, e2) = MATERIALS
     ratio = np.sqrt(rho2 * e2) / np.sqrt(rho1 * e1)
 
+    with open(os.path.join(case, "log.touchFoam")) as f:
+        log = f.read()
+    warning = "sides' forces of the contact between bodies"
+    warnings = log.count(warning)
+
     failures = []
+    if warnings != 1 or "ballSurface plateTop" not in log:
+        failures.append("%d warnings that the two sides' forces part "
+                        "(naming ballSurface plateTop), not 1" % warnings)
     if not growth <= 1e-12:
         failures.append("kinetic + strain energy grew by %.2e E0 in a step"
                         % growth)
@@ -131,6 +142,7 @@ def body():
         "largest energy change in a step %+.2e E0, smallest change of the "
         "numerical remainder %+.2e E0" % (growth, remainder),
         "p_y drift %.1e |p0|" % drift,
+        "warned once that the two sides' forces part",
     ]
     return testing.verdict(lines, failures)
 

@@ -168,6 +168,8 @@ Foam::deformationUpdates::compatible::compatible
     upwindTangential_(0),
     upwindInline_(riemann.upwindCoefficients(upwindNormal_, upwindTangential_)),
     hasContact_(contactSurfaces::any(faces.lm())),
+    imbalanceWarned_(false),
+    largestContactForce_(0),
     releasing_(releasesOnForce(faces.lm())),
     releaseFaceForce_(faces.mesh().boundary().size())
 {

@@ -390,6 +390,36 @@ Foam::scalar Foam::deformationUpdates::compatible::contactWeight
 }
 
 
+void Foam::deformationUpdates::compatible::warnImbalance
+(
+    const vector& imbalance,
+    const scalar forceScale,
+    const wordList& patches
+)
+{
+    // forceScale sums both sides' magnitudes: twice the contact force
+    largestContactForce_ = max(largestContactForce_, forceScale/2);
+    const scalar share = mag(imbalance)/max(largestContactForce_, VSMALL);
+    if (largestContactForce_ <= VSMALL || share <= imbalanceWarning)
+    {
+        return;
+    }
+
+    imbalanceWarned_ = true;
+    WarningInFunction
+        << "At time " << faces_.mesh().time().timeName()
+        << " the two sides' forces of the contact between bodies "
+        << patches << " differ by " << 100*share
+        << " % of the largest contact force so far." << nl
+        << "    With FUpdate compatible each side holds its faces in"
+        << " contact whole; where the faces do not match, the two sides"
+        << " hold different areas," << nl
+        << "    the balancing moves the difference, and the energy can"
+        << " grow (doc/userGuide.md, bodies in contact). Warned once."
+        << nl << endl;
+}
+
+
 void Foam::deformationUpdates::compatible::balanceContactForces
 (
     vectorField& lmRate
@@ -403,6 +433,8 @@ void Foam::deformationUpdates::compatible::balanceContactForces
     const fvMesh& mesh = faces_.mesh();
     vector imbalance(Zero);
     scalar weightSum = 0;
+    scalar forceScale = 0;
+    DynamicList<word> patches;
 
     forAll(mesh.boundary(), patchi)
     {
@@ -418,6 +450,12 @@ void Foam::deformationUpdates::compatible::balanceContactForces
         const labelUList& faceCells = condition.patch().faceCells();
 
         imbalance += condition.stageForce();
+        if (!imbalanceWarned_)
+        {
+            forceScale +=
+                mag(returnReduce(condition.stageForce(), sumOp<vector>()));
+            patches.append(condition.patch().name());
+        }
         forAll(condition.touching(), i)
         {
             if (condition.touching()[i])
@@ -429,6 +467,11 @@ void Foam::deformationUpdates::compatible::balanceContactForces
 
     reduce(imbalance, sumOp<vector>());
     reduce(weightSum, sumOp<scalar>());
+
+    if (!imbalanceWarned_)
+    {
+        warnImbalance(imbalance, forceScale, patches);
+    }
 
     if (weightSum <= 0)
     {
