@@ -50,6 +50,31 @@ experiments of FINDINGS.md:
     koren=C             shares from third-order (kappa = 1/3) face values
                         with Koren's bounds (C = 2); with ht=rec the map
                         takes each cell's own increment to each point
+    thinc=B, tsel=bvd|all, tvar=vs|v|s, tchar=1   shares from THINC
+                        face values (tanh step of steepness B, B = step:
+                        the step from the left to the right neighbour,
+                        ENO-SR's front located from the average) in the
+                        interior cells whose value lies between their
+                        neighbours'; tsel=bvd (default) keeps per cell
+                        THINC or MC, whichever gives the smaller face
+                        jumps (BVD), all takes THINC wherever it applies;
+                        tvar the fields it replaces (v: the face
+                        upwinding's, s: the point upwinding's); tchar on
+                        s -+ v instead (tvar ignored); with ht=rec the map
+                        takes the same values per cell and point
+    tmap=B              the map alone from the THINC(-BVD) values of v (tsel
+                        as above), per cell and point factors of the
+                        central gradient frozen for the stage, the shares
+                        unchanged
+    sfct=1              Zalesak on the shares: low order the shares 1, high
+                        order the variant's, one factor per point for its
+                        point and face terms, s and v kept within the
+                        cells' neighbours and the low-order values
+    fshare=zero         the face upwinding off (as a high order for sfct)
+With --smooth sin2|gauss the bar instead carries a right-running pulse
+(v = g(x - t), s = -g, width 0.5 from x = 0.1, no contact) to t = 0.3;
+prints the L1 and max error of v against the exact cell averages, the L1
+order against the previous N, E(T)/E0 and the largest rise in a step.
 Prints per run E/E0 at t = 0.625, 1.5 (arrival), the separation and 3.0,
 the wall's force over the middle 80 % of the contact and its ringing, the
 precursor (largest tension ahead of the compressive front at t = 1.0,
@@ -142,6 +167,47 @@ def share(rec, cell):
     return np.where(c > 1e-300, np.clip(rec * cell / np.where(c > 1e-300, c, 1), 0, 1), 0.0)
 
 
+def thinc_bvd(q, qL, qR, beta, sel="bvd", tol=1e-12):
+    """THINC-BVD face values: qL, qR the limited linear (MC) values at each
+    cell's right and left face.  In an interior cell whose value lies
+    strictly between its neighbours' (a monotone jump), the THINC step
+    q_min + dq/2 (1 + theta tanh(beta (X - X_c))), X in [0, 1] over the
+    cell, X_c from the cell average (beta = inf: the step from q_{i-1} to
+    q_{i+1}, ENO-SR's front located from the average); sel = bvd keeps
+    per cell the candidate whose face jumps (with the neighbours' values
+    of the same candidate) add up smaller (Sun, Inaba, Xiao 2016; Deng et
+    al. 2018), sel = all takes THINC in every monotone cell."""
+    N = len(q)
+    tL, tR = qL.copy(), qR.copy()
+    qm, q0, qp = q[:-2], q[1:-1], q[2:]
+    d = qp - qm
+    mono = ((q0 - qm) * (qp - q0) > 0) & (np.abs(d) > tol)
+    if beta == np.inf:
+        right, left = qp, qm
+    else:
+        qmin = np.minimum(qm, qp); dq = np.abs(d); th = np.sign(d)
+        C = np.clip((q0 - qmin) / np.where(mono, dq, 1), 1e-12, 1 - 1e-12)
+        B = np.exp(th * beta * (2 * C - 1))
+        A = (B / np.cosh(beta) - 1) / np.tanh(beta)
+        right = qmin + 0.5 * dq * (1 + th * (np.tanh(beta) + A) / (1 + A * np.tanh(beta)))
+        left = qmin + 0.5 * dq * (1 + th * A)
+    tL[1:-1] = np.where(mono, right, qL[1:-1])
+    tR[1:-1] = np.where(mono, left, qR[1:-1])
+    if sel == "all":
+        return tL, tR
+
+    def tbv(L, R):
+        j = np.abs(L[:-1] - R[1:])     # the interior faces' jumps
+        out = np.zeros(N); out[1:] += j; out[:-1] += j
+        return out
+    pick = tbv(tL, tR) < tbv(qL, qR)
+    return np.where(pick, tL, qL), np.where(pick, tR, qR)
+
+
+def tbeta(x):
+    return np.inf if x in ("inf", "step") else float(x)
+
+
 class Model:
     def __init__(self, N, variant="default", cfl=0.3, rk=2):
         self.N, self.h, self.variant = N, 1.0 / N, variant
@@ -214,6 +280,25 @@ class Model:
                 uv, dv_ = kor(v); us, ds_ = kor(s)
             vL[1:-1] = v[1:-1] + uv; vR[1:-1] = v[1:-1] - dv_
             sL[1:-1] = s[1:-1] + us; sR[1:-1] = s[1:-1] - ds_
+        if "thinc" in opt or "tmap" in opt:
+            sel = opt.get("tsel", "bvd")
+            vL0, vR0 = vL, vR
+            if "thinc" in opt:
+                b = tbeta(opt["thinc"])
+                if opt.get("tchar", "0") == "1":
+                    # on s -+ v: w1 = s - v, w2 = s + v
+                    w1L, w1R = thinc_bvd(s - v, sL - vL, sR - vR, b, sel)
+                    w2L, w2R = thinc_bvd(s + v, sL + vL, sR + vR, b, sel)
+                    vL, vR = 0.5 * (w2L - w1L), 0.5 * (w2R - w1R)
+                    sL, sR = 0.5 * (w1L + w2L), 0.5 * (w1R + w2R)
+                else:
+                    tv = opt.get("tvar", "vs")
+                    if "v" in tv:
+                        vL, vR = thinc_bvd(v, vL, vR, b, sel)
+                    if "s" in tv:
+                        sL, sR = thinc_bvd(s, sL, sR, b, sel)
+            if "tmap" in opt:
+                self.tmapv = thinc_bvd(v, vL0, vR0, tbeta(opt["tmap"]), sel)
         # nodal forces f_a = s_L - s_R (outside: 0)
         f = np.zeros(N + 1)
         f[1:-1] = s[:-1] - s[1:]
@@ -231,6 +316,8 @@ class Model:
             phi = np.sqrt(phi)
         elif opt.get("fshare") == "one":
             phi = np.ones_like(phi)
+        elif opt.get("fshare") == "zero":
+            phi = np.zeros_like(phi)
         tC = 0.5 * phi ** 2 * jump
         rate[:-1] += tC; rate[1:] -= tC
         self.loss = [np.sum(0.5 * phi ** 2 * jump ** 2), 0.0, 0.0]
@@ -275,7 +362,7 @@ class Model:
             out[:-1] += q_left[1:]; out[1:] -= q_left[1:]
             return out
         pv = amap(wl, wr)
-        if "ht" in opt:
+        if "ht" in opt or "tmap" in opt:
             gu = gradient(v, h)
             extl = -0.5 * h * gu; extr = 0.5 * h * gu   # increments
             # candidate 1: bound each extrapolation by the point's cells
@@ -285,10 +372,10 @@ class Model:
             vl = np.r_[v[0], v[:-1]]; vr = np.r_[v[1:], v[-1]]
             fl = c1(extl, np.minimum(vl, v) - v, np.maximum(vl, v) - v)
             fr = c1(extr, np.minimum(vr, v) - v, np.maximum(vr, v) - v)
-            kind = opt["ht"]
+            kind = opt.get("ht", "tmap")
             if kind.startswith("bj"):
                 fl = fr = fac.copy()
-            if not kind.endswith("all") and kind != "rec":
+            if not kind.endswith("all") and kind not in ("rec", "tmap"):
                 # downstream: the wave through point a runs into cell e
                 ds = np.diff(s); dv = np.diff(v)
                 right = np.abs(ds - dv) > np.abs(ds + dv)    # per interior point
@@ -307,6 +394,9 @@ class Model:
             if kind == "rec":
                 # the reconstruction's own increments to each point
                 fr = ratio(vL - v, extr); fl = ratio(vR - v, extl)
+            if kind == "tmap":
+                # the THINC-BVD increments of v to each point
+                fr = ratio(self.tmapv[0] - v, extr); fl = ratio(self.tmapv[1] - v, extl)
             if kind.startswith("zs"):
                 # downstream: 0 where the cell's limiter acts, up: 1 or k
                 p = float(kind[2:]) if len(kind) > 2 else 0.0
@@ -396,7 +486,7 @@ class Model:
             srate = (pv[1:] - pv[:-1]) / h
         # -A^T f (f constrained)
         g = -fc
-        if "ht" in opt:
+        if "ht" in opt or "tmap" in opt:
             fl, fr = self.sides
             shr = g / n_a
             out = shr[:-1] + shr[1:]
@@ -411,14 +501,54 @@ class Model:
             rate += atrans(g, wl, wr)
         if lam is not None:
             rate += atrans(lam * g, wlh, wrh) - atrans(lam * g, wl, wr)
+        if "sfct" in opt:
+            # Zalesak on the shares: low order the shares 1, high order the
+            # variant's; one factor per point for its point and face terms
+            k = self.dt
+            adp = self.mob * (1 - phia) * fc          # pv_high - pv_low
+            if self.contact:
+                adp[0] = 0.0
+            adf = -0.5 * (1 - phi ** 2) * jump        # tC_high - tC_low
+            cs = np.zeros((N + 1, 2)); cv = np.zeros((N + 1, 2))  # to cells a-1, a
+            cs[:, 0] = adp / h; cs[:, 1] = -adp / h
+            cv[1:-1, 0] = adf / h; cv[1:-1, 1] = -adf / h
+            cs[0, 0] = cs[-1, 1] = 0.0
+            def to_cells(c):
+                out = np.zeros(N); out += c[1:, 0]; out += c[:-1, 1]
+                return out
+            srate_lo = srate - to_cells(cs)
+            vrate_lo = rate / h - to_cells(cv)
+            def limit(q, qrate_lo, c):
+                qlow = q + k * qrate_lo
+                qmax = np.maximum(q, qlow); qmin = np.minimum(q, qlow)
+                qmax[1:] = np.maximum(qmax[1:], q[:-1]); qmax[:-1] = np.maximum(qmax[:-1], q[1:])
+                qmin[1:] = np.minimum(qmin[1:], q[:-1]); qmin[:-1] = np.minimum(qmin[:-1], q[1:])
+                Pp = k * to_cells(np.maximum(c, 0)); Pm = k * to_cells(np.minimum(c, 0))
+                Qp = np.maximum(qmax - qlow, 0); Qm = np.minimum(qmin - qlow, 0)
+                Rp = np.where(Pp > 1e-300, np.minimum(1, Qp / np.where(Pp > 1e-300, Pp, 1)), 1)
+                Rm = np.where(Pm < -1e-300, np.minimum(1, Qm / np.where(Pm < -1e-300, Pm, -1)), 1)
+                Rp = np.r_[1.0, Rp, 1.0]; Rm = np.r_[1.0, Rm, 1.0]   # padded: cell a-1 at [a], a at [a+1]
+                left = np.where(c[:, 0] > 0, Rp[:-1], Rm[:-1])
+                right = np.where(c[:, 1] > 0, Rp[1:], Rm[1:])
+                return np.minimum(left, right)
+            lam = np.minimum(limit(s, srate_lo, cs), limit(v, vrate_lo, cv))
+            srate = srate_lo + to_cells(lam[:, None] * cs)
+            rate = h * (vrate_lo + to_cells(lam[:, None] * cv))
+            pe = 1 - lam * (1 - phia)
+            fe = 1 - lam[1:-1] * (1 - phi ** 2)
+            self.loss[0] = np.sum(0.5 * fe * jump ** 2)
+            self.loss[1] = np.sum(self.mob * pe * fc ** 2)
+            pv = pv - (1 - lam) * adp
         return rate / h, srate, pv[0], wall_force
 
     def energy(self, v, s):
         return 0.5 * self.h * np.sum(v * v + s * s)
 
-    def run(self, T=3.0):
+    def run(self, T=3.0, init=None):
         N = self.N
         v = -np.ones(N); s = np.zeros(N); u0 = 0.0
+        if init is not None:
+            v, s = init
         t = 0.0
         E0 = self.energy(v, s)
         rows = []
@@ -465,11 +595,68 @@ def measure(N, variant):
                 rise=max(0.0, np.diff(E).max()), lost=lost[sep])
 
 
+def pulse_avg(N, t, shape, a=0.1, w=0.5):
+    """Cell averages of the right-running pulse v = g(x - t), s = -g(x - t):
+    sin2, g = sin^2(pi (x - a)/w) on [a, a + w] (C1); gauss, g =
+    exp(-((x - a - w/2)/(w/6))^2) (C-infinity to 1e-9 at a, a + w)."""
+    x0 = np.arange(N) / N - t - a; x1 = x0 + 1.0 / N
+    if shape == "sin2":
+        y0 = np.clip(x0, 0, w); y1 = np.clip(x1, 0, w)
+        k = 2 * np.pi / w
+        I = 0.5 * (y1 - y0) - 0.5 * (np.sin(k * y1) - np.sin(k * y0)) / k
+    else:
+        from math import erf, sqrt, pi
+        sg = w / 6.0
+        E = np.vectorize(erf)
+        I = 0.5 * sqrt(pi) * sg * (E((x1 - 0.5 * w) / sg) - E((x0 - 0.5 * w) / sg))
+    g = I * N
+    return g, -g
+
+
+def measure_smooth(N, variant, shape, T=0.3):
+    """The pulse from its exact cell averages to T (no contact): L1 and max
+    error of v against the exact cell averages, E(T)/E0, largest rise."""
+    m = Model(N, variant)
+    m.gap = 1e9
+    v0, s0 = pulse_avg(N, 0.0, shape)
+    E0 = m.energy(v0, s0)
+    t = 0.0; v, s, u0 = v0.copy(), s0.copy(), 0.0
+    Es = [1.0]
+    while t < T - 1e-12:
+        k = min(m.dt, T - t)
+        a, b, w, _ = m.rates(v, s, u0, True)
+        v1 = v + k * a; s1 = s + k * b; u1 = u0 + k * w
+        a, b, w, _ = m.rates(v1, s1, u1, False)
+        v = 0.5 * (v + v1 + k * a); s = 0.5 * (s + s1 + k * b)
+        u0 = 0.5 * (u0 + u1 + k * w)
+        t += k
+        Es.append(m.energy(v, s) / E0)
+    ve, se = pulse_avg(N, T, shape)
+    return dict(L1=np.sum(np.abs(v - ve)) / N, Linf=np.abs(v - ve).max(),
+                E=Es[-1], rise=max(0.0, np.diff(Es).max()))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("-n", type=int, nargs="+", default=[50])
     ap.add_argument("--variant", nargs="+", default=["default"])
+    ap.add_argument("--smooth", choices=["sin2", "gauss"],
+                    help="instead of the bounce: a right-running smooth "
+                    "pulse of width 0.5 from x = 0.1, to t = 0.3; prints the "
+                    "L1 and max error of v, the L1 order against the "
+                    "previous N, E(T)/E0 and the largest rise in a step")
     a = ap.parse_args()
+    if a.smooth:
+        for var in a.variant:
+            prev = None
+            for N in a.n:
+                r = measure_smooth(N, var, a.smooth)
+                order = "" if prev is None else "%5.2f" % (
+                    np.log(prev[1] / r["L1"]) / np.log(N / prev[0]))
+                print("%-20s N %4d  L1 %.3e order %5s  max %.3e  E %.6f rise %.1e"
+                      % (var, N, r["L1"], order, r["Linf"], r["E"], r["rise"]))
+                prev = (N, r["L1"])
+        return
     for var in a.variant:
         for N in a.n:
             r = measure(N, var)
