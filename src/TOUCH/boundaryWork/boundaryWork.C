@@ -88,6 +88,7 @@ void Foam::boundaryWork::addStage
     bodyWork_ = alpha*bodyWork0_ + beta*bodyWork_;
 
     const scalar weight = beta*dt;
+    const volVectorField& lm = mesh_.lookupObject<volVectorField>("lm");
     forAll(pC, patchi)
     {
         const vectorField& p = pC[patchi];
@@ -99,6 +100,23 @@ void Foam::boundaryWork::addStage
         const fvPatch& patch = mesh_.boundary()[patchi];
         const scalarField& magSf = patch.magSf();
         const labelUList& faceCells = patch.faceCells();
+
+        // A force at points the faces' fluxes do not see: its power as
+        // the update had it, the patch's body's
+        const fvPatchVectorField& pf = lm.boundaryField()[patchi];
+        if
+        (
+            isA<solidFluxFvPatchVectorField>(pf)
+         && refCast<const solidFluxFvPatchVectorField>(pf).reportsPower()
+        )
+        {
+            const scalar work =
+                weight
+               *refCast<const solidFluxFvPatchVectorField>(pf).stagePower();
+            patchWork_[patchi] += work;
+            bodyWork_[cellBody_[faceCells[0]]] += work;
+            continue;
+        }
 
         scalar patchWork = 0;
         forAll(p, i)
@@ -114,7 +132,6 @@ void Foam::boundaryWork::addStage
 
     if (frictionPatches_.size())
     {
-        const volVectorField& lm = mesh_.lookupObject<volVectorField>("lm");
         frictionWork_ = alpha*frictionWork0_ + beta*frictionWork_;
         for (const label patchi : frictionPatches_)
         {

@@ -258,4 +258,10 @@ void Foam::solidFaces::update()
 }
 
 
+const Foam::contactSurfaces& Foam::solidFaces::contact() const
+{
+    return contact_();
+}
+
+
 // ************************************************************************* //

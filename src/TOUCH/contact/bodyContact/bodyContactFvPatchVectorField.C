@@ -21,6 +21,17 @@ namespace Foam
         "-", "all bodyContact patches, itself included", "(barRightEnd)"
     );
 
+    static const declaredEntry<word> bodyContactSideEntry
+    (
+        "0/U (or 0/lm) boundaryField, type bodyContact", "side",
+        "with FUpdate compatible, which side's points are held in a contact"
+        " of this patch: both (each side holds its faces' points at the"
+        " pair's contact velocity; faces that match) or nodes (this patch's"
+        " points follow the partner surface under them and load its points"
+        " with their reactions; faces that do not match, the finer side)",
+        "-", word("both"), entryLimits::oneOf({"both", "nodes"})
+    );
+
     static const describedEntry bodyContactContactEntry
     (
         "0/U (or 0/lm) boundaryField, type bodyContact", "contact",
@@ -107,7 +118,10 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     contactVelocity_(p.size(), Zero),
     nodalForce_(p.size(), Zero),
     stageForce_(Zero),
-    pointConstrained_(false)
+    pointConstrained_(false),
+    nodes_(false),
+    nodePower_(0),
+    nodePowerSet_(false)
 {}
 
 
@@ -124,7 +138,8 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
         wordList
         ({
             bodyContactPatchesEntry.name(), bodyContactContactEntry.name(),
-            "friction", bodyContactSlipEntry.name()
+            "friction", bodyContactSlipEntry.name(),
+            bodyContactSideEntry.name()
         })
     ),
     patches_
@@ -142,7 +157,10 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     contactVelocity_(p.size(), Zero),
     nodalForce_(p.size(), Zero),
     stageForce_(Zero),
-    pointConstrained_(false)
+    pointConstrained_(false),
+    nodes_(bodyContactSideEntry.read(dict) == "nodes"),
+    nodePower_(0),
+    nodePowerSet_(false)
 {}
 
 
@@ -172,7 +190,10 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     contactVelocity_(p.size(), Zero),
     nodalForce_(p.size(), Zero),
     stageForce_(Zero),
-    pointConstrained_(false)
+    pointConstrained_(false),
+    nodes_(ptf.nodes_),
+    nodePower_(0),
+    nodePowerSet_(false)
 {
     scalarField contact(ptf.contact_.size());
     forAll(contact, facei)
@@ -205,7 +226,10 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     contactVelocity_(ptf.contactVelocity_),
     nodalForce_(ptf.nodalForce_),
     stageForce_(ptf.stageForce_),
-    pointConstrained_(ptf.pointConstrained_)
+    pointConstrained_(ptf.pointConstrained_),
+    nodes_(ptf.nodes_),
+    nodePower_(0),
+    nodePowerSet_(false)
 {}
 
 
@@ -228,7 +252,10 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     contactVelocity_(ptf.contactVelocity_),
     nodalForce_(ptf.nodalForce_),
     stageForce_(ptf.stageForce_),
-    pointConstrained_(ptf.pointConstrained_)
+    pointConstrained_(ptf.pointConstrained_),
+    nodes_(ptf.nodes_),
+    nodePower_(0),
+    nodePowerSet_(false)
 {}
 
 
@@ -268,6 +295,15 @@ void Foam::bodyContactFvPatchVectorField::flux
         return;
     }
 
+    // With side nodes the points follow the partner surface and the
+    // reactions alone carry the contact force, which the partner takes:
+    // the flux damps nothing (the cell's own normal momentum), so that no
+    // force acts on one side only
+    const tmp<vectorField> tlmCell
+    (
+        nodes_ ? patchInternalField() : tmp<vectorField>(new vectorField())
+    );
+
     // Along the pair's normal, the rigid wall's flux with the contact
     // velocity: with the same normal velocity of the points, two equal
     // bars meet as one bar meets a wall (the update balances the forces)
@@ -277,7 +313,12 @@ void Foam::bodyContactFvPatchVectorField::flux
         {
             const tensor nn(sqr(normal_[facei]));
             const tensor tangential(tensor::I - nn);
-            const vector momentum(s.rho[facei]*contactVelocity_[facei]);
+            const vector momentum
+            (
+                nodes_
+              ? tlmCell()[facei]
+              : vector(s.rho[facei]*contactVelocity_[facei])
+            );
 
             pC[facei] = (tangential & pC[facei]) + (nn & momentum);
             tC[facei] =
@@ -311,17 +352,29 @@ void Foam::bodyContactFvPatchVectorField::addTorque
 
 void Foam::bodyContactFvPatchVectorField::constraint
 (
-    const interiorState&,
+    const interiorState& s,
     tensorField& free,
     vectorField& velocity
 ) const
 {
+    // With side nodes the update prescribes each point's normal velocity
+    // from the partner surface (compatible::holdNodesOnSurfaces); the
+    // face's is the cell's own, so that its damping takes nothing
+    const tmp<vectorField> tlmCell
+    (
+        nodes_ ? patchInternalField() : tmp<vectorField>(new vectorField())
+    );
+
     forAll(touching_, facei)
     {
         if (touching_[facei])
         {
-            free[facei] = tensor::I - sqr(normal_[facei]);
-            velocity[facei] = contactVelocity_[facei];
+            const tensor nn(sqr(normal_[facei]));
+            free[facei] = tensor::I - nn;
+            velocity[facei] =
+                nodes_
+              ? vector((nn & tlmCell()[facei])/s.rho[facei])
+              : contactVelocity_[facei];
         }
         else
         {
@@ -395,6 +448,10 @@ void Foam::bodyContactFvPatchVectorField::write(Ostream& os) const
     if (patches_.size())
     {
         os.writeEntry(bodyContactPatchesEntry.name(), patches_);
+    }
+    if (nodes_)
+    {
+        os.writeEntry(bodyContactSideEntry.name(), word("nodes"));
     }
 
     scalarField contact(contact_.size());

@@ -99,6 +99,16 @@ Foam::contactSurfaces::contactSurfaces
 {
     setAllowed(lm);
 
+    nodes_.setSize(patches_.size());
+    forAll(patches_, s)
+    {
+        nodes_[s] =
+            refCast<const bodyContactFvPatchVectorField>
+            (
+                lm.boundaryField()[patches_[s]]
+            ).nodes();
+    }
+
     for (const label patchi : patches_)
     {
         friction_ =
@@ -273,6 +283,12 @@ void Foam::contactSurfaces::update
     const label offset = globalFaces_.localStart();
     label nActive = 0;
 
+    faceActive_.setSize(sums.active.size());
+    forAll(sums.active, g)
+    {
+        faceActive_[g] = sums.active[g];
+    }
+
     // The conditions' tractions per reference area
     forAll(patches_, s)
     {
@@ -335,6 +351,13 @@ void Foam::contactSurfaces::update
         );
     }
 }
+
+
+// * * * * * * * * * * * * * Explicit Instantiations * * * * * * * * * * * //
+
+//- The gather of side nodes' slots (contactSurfacesNodes.C)
+template Foam::tmp<Foam::Field<Foam::vector>>
+Foam::contactSurfaces::gather(const Field<vector>&) const;
 
 
 // ************************************************************************* //

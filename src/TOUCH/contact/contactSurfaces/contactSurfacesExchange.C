@@ -244,6 +244,24 @@ void Foam::contactSurfaces::addPair
         return;
     }
 
+    // A pair of side nodes: the update holds the nodes side's points on
+    // the other's surface, and their reactions are the whole exchange
+    // (compatible::transferNodeReactions): no force here, the nodes side
+    // alone pushed on (its points held), the other's points free
+    if (nodePair(gi, gj))
+    {
+        const label gNodes = nodes_[slot_[gi]] ? gi : gj;
+        sums.weight[gNodes] += share;
+        sums.velocitySum[gNodes] += (share*(v_[gNodes] & nij))*nij;
+        sums.active[gi] = 1;
+        sums.active[gj] = 1;
+        sums.normalForce -= tN*share;
+        sums.area += share;
+        sums.penetration = max(sums.penetration, -pair.gap);
+        mostTensile_ = max(mostTensile_, tN);
+        return;
+    }
+
     vector f(tN*nij);
 
     if (friction)

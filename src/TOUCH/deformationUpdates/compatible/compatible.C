@@ -168,6 +168,9 @@ Foam::deformationUpdates::compatible::compatible
     upwindTangential_(0),
     upwindInline_(riemann.upwindCoefficients(upwindNormal_, upwindTangential_)),
     hasContact_(contactSurfaces::any(faces.lm())),
+    hasNodeContact_(false),
+    nodeShare_(faces.mesh().boundary().size()),
+    nodeNormal_(faces.mesh().boundary().size()),
     imbalanceWarned_(false),
     largestContactForce_(0),
     releasing_(releasesOnForce(faces.lm())),
@@ -198,7 +201,17 @@ Foam::deformationUpdates::compatible::compatible
         fvPatchVectorField& pf = faces.lm().boundaryFieldRef()[patchi];
         if (isA<bodyContactFvPatchVectorField>(pf))
         {
-            refCast<bodyContactFvPatchVectorField>(pf).setPointConstrained();
+            bodyContactFvPatchVectorField& condition =
+                refCast<bodyContactFvPatchVectorField>(pf);
+            condition.setPointConstrained();
+
+            if (condition.nodes())
+            {
+                const label nPoints = condition.patch().patch().nPoints();
+                nodeShare_.set(patchi, new vectorField(nPoints, Zero));
+                nodeNormal_.set(patchi, new vectorField(nPoints, Zero));
+                hasNodeContact_ = true;
+            }
         }
     }
 
@@ -257,6 +270,7 @@ void Foam::deformationUpdates::compatible::rates
     }
 
     reportWallForces(torque);
+    transferNodeReactions(torque);
     balanceContactForces(lmRate);
 
     // Point velocities v_a = Pi_a (A v)_a + b_a, and the upwinding of the
@@ -292,6 +306,10 @@ void Foam::deformationUpdates::compatible::rates
     {
         addDriftRotation(pointV);
     }
+
+    // Points held on a partner surface (side nodes) follow its points'
+    // final velocities
+    holdNodesOnSurfaces(pointV);
 
     // F follows the point motion alone (no upwind part: see the header)
     addFaceMeanFRate(pointV, FRate);

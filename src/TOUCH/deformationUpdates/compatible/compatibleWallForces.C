@@ -278,6 +278,10 @@ void Foam::deformationUpdates::compatible::reportWallForces
 
         // The facets of a contact surface held along their normal alone,
         // as the constraint combined them (kinematicPointConstraints)
+        // A patch with side nodes keeps each point's normal and its share
+        // of the reaction, which go to the partner surface
+        // (transferNodeReactions)
+        const bool nodes = nodeShare_.set(patchi);
         if (condition.contactSurface())
         {
             vector e;
@@ -285,7 +289,15 @@ void Foam::deformationUpdates::compatible::reportWallForces
             {
                 ownSum[j] =
                     kinematicPointConstraints::surfaceFixed(ownSum[j], e);
+                if (nodes)
+                {
+                    nodeNormal_[patchi][j] = e;
+                }
             }
+        }
+        if (nodes)
+        {
+            nodeShare_[patchi] = Zero;
         }
 
         // The wall's part of the constraint's reaction at those points,
@@ -306,6 +318,10 @@ void Foam::deformationUpdates::compatible::reportWallForces
                     )/pointMarks_[pointi]
                 );
                 reaction += share;
+                if (nodes)
+                {
+                    nodeShare_[patchi][j] = share;
+                }
 
                 // At the point where it acts (the stage's positions)
                 if (pointDisplacement_)
@@ -415,7 +431,10 @@ void Foam::deformationUpdates::compatible::warnImbalance
         << " contact whole; where the faces do not match, the two sides"
         << " hold different areas," << nl
         << "    the balancing moves the difference, and the energy can"
-        << " grow (doc/userGuide.md, bodies in contact). Warned once."
+        << " grow (doc/userGuide.md, bodies in contact)." << nl
+        << "    'side nodes;' in the finer of the two patches' bodyContact"
+        << " entries holds that side alone on the other's surface and"
+        << " exchanges the force point by point. Warned once."
         << nl << endl;
 }
 

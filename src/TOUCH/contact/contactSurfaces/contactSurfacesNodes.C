@@ -1,0 +1,287 @@
+/*---------------------------------------------------------------------------*\
+  touchFoam: explicit large-strain solid dynamics (TOUCH) on OpenFOAM
+-------------------------------------------------------------------------------
+License
+    GPL-3.0-or-later, as OpenFOAM.
+
+Description
+    Side nodes of contactSurfaces: the partner surface under a held point,
+    its weights over the partner face's points, and the point slots through
+    which the update reads the partner's velocities and gives it the
+    reactions (compatible::transferNodeReactions, holdNodesOnSurfaces).
+
+\*---------------------------------------------------------------------------*/
+
+#include "contactSurfaces.H"
+#include "bodyContactFvPatchVectorField.H"
+
+// * * * * * * * * * * * * * * * Local Constants * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    //- Opposed faces: the cosine of the angle of their normals below this
+    //  (as the pairing's)
+    static const scalar nodesOpposedCos = -0.5;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::contactSurfaces::anyNodes() const
+{
+    forAll(nodes_, s)
+    {
+        if (nodes_[s])
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
+bool Foam::contactSurfaces::nodesContact(const label s) const
+{
+    if (nodes_[s])
+    {
+        return true;
+    }
+    forAll(nodes_, t)
+    {
+        if (nodes_[t] && allowed_[s][t])
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
+void Foam::contactSurfaces::subtractSlotPowers
+(
+    const vectorField& slotForce,
+    const vectorField& slotVelocity,
+    scalarField& patchPower
+) const
+{
+    label o = pointStart_[globalFaces_.localStart()];
+    forAll(patches_, s)
+    {
+        const label nSlots =
+            pointStart_[globalFaces_.localStart() + start_[s + 1]]
+          - pointStart_[globalFaces_.localStart() + start_[s]];
+        for (label m = 0; m < nSlots; ++m)
+        {
+            patchPower[s] -= slotForce[o] & slotVelocity[o];
+            ++o;
+        }
+    }
+}
+
+
+Foam::label Foam::contactSurfaces::localFace
+(
+    const label patchi,
+    const label i
+) const
+{
+    const label s = patches_.find(patchi);
+    if (s < 0)
+    {
+        FatalErrorInFunction
+            << "Patch " << mesh_.boundary()[patchi].name()
+            << " is not a bodyContact patch" << exit(FatalError);
+    }
+    return start_[s] + i;
+}
+
+
+void Foam::contactSurfaces::surfaceWeights
+(
+    const label k,
+    const point& x,
+    const vector& e,
+    DynamicList<label>& slots,
+    DynamicList<scalar>& weights
+) const
+{
+    const label gk = globalFaces_.localStart() + k;
+    const label s = slot_[gk];
+
+    // The best triangle so far: its face, its edge and the barycentric
+    // weights of the point where the line x + t e meets its plane.  Best:
+    // the largest smallest weight (inside when >= 0), ties to the smaller
+    // face index, so that every rank that holds the point chooses alike
+    label bestFace = -1;
+    label bestEdge = -1;
+    scalar bestScore = -GREAT;
+    vector bestLambda(Zero);
+
+    const auto consider = [&](const label g)
+    {
+        if
+        (
+            !faceActive_[g]
+         || !allowed_[s][slot_[g]]
+         || !nodePair(gk, g)
+         || (n_[gk] & n_[g]) > nodesOpposedCos
+        )
+        {
+            return;
+        }
+
+        const label first = pointStart_[g];
+        const label nPoints = pointStart_[g + 1] - first;
+        point centre(Zero);
+        for (label m = 0; m < nPoints; ++m)
+        {
+            centre += pointOffsets_[first + m];
+        }
+        centre = x_[g] + centre/nPoints;
+        const scalar size = Foam::sqrt(a_[g]);
+
+        for (label m = 0; m < nPoints; ++m)
+        {
+            const point b(x_[g] + pointOffsets_[first + m]);
+            const point d(x_[g] + pointOffsets_[first + (m + 1) % nPoints]);
+            const vector N((b - centre) ^ (d - centre));
+            const scalar magSqrN = magSqr(N);
+            const scalar across = e & N;
+            if (magSqrN <= VSMALL || mag(across) <= 1e-6*Foam::sqrt(magSqrN))
+            {
+                continue;
+            }
+
+            // Along e from x to the triangle's plane: not a face of the far
+            // side of a body
+            const scalar t = ((centre - x) & N)/across;
+            if (t < -0.5*size || t > 0.5*size)
+            {
+                continue;
+            }
+            const vector r(x + t*e - centre);
+            const scalar lb = ((r ^ (d - centre)) & N)/magSqrN;
+            const scalar ld = (((b - centre) ^ r) & N)/magSqrN;
+            const vector lambda(1 - lb - ld, lb, ld);
+            const scalar score = cmptMin(lambda);
+
+            if
+            (
+                score > bestScore
+             || (score == bestScore && g < bestFace)
+            )
+            {
+                bestFace = g;
+                bestEdge = m;
+                bestScore = score;
+                bestLambda = lambda;
+            }
+        }
+    };
+
+    for (const label g : candidates_[k])
+    {
+        consider(g);
+    }
+
+    // A face in contact has its partners among its candidates; should the
+    // search have missed one, every face is tried before giving up
+    if (bestFace < 0)
+    {
+        forAll(x_, g)
+        {
+            consider(g);
+        }
+    }
+    if (bestFace < 0)
+    {
+        FatalErrorInFunction
+            << "No partner surface under the point " << x << " of patch "
+            << mesh_.boundary()[patches_[s]].name() << " (side nodes), which"
+            << " its face's contact holds" << exit(FatalError);
+    }
+
+    // Clipped to the triangle, then spread over the face's points: the
+    // centre's weight equally
+    vector lambda(max(bestLambda, vector::zero));
+    lambda /= cmptSum(lambda);
+
+    const label first = pointStart_[bestFace];
+    const label nPoints = pointStart_[bestFace + 1] - first;
+    for (label m = 0; m < nPoints; ++m)
+    {
+        scalar w = lambda.x()/nPoints;
+        if (m == bestEdge)
+        {
+            w += lambda.y();
+        }
+        if (m == (bestEdge + 1) % nPoints)
+        {
+            w += lambda.z();
+        }
+        slots.append(first + m);
+        weights.append(w);
+    }
+}
+
+
+Foam::tmp<Foam::vectorField> Foam::contactSurfaces::gatherSlots
+(
+    const vectorField& pointValues
+) const
+{
+    const faceList& faces = mesh_.faces();
+    vectorField local
+    (
+        pointStart_[globalFaces_.localStart() + globalFaces_.localSize()]
+      - pointStart_[globalFaces_.localStart()]
+    );
+
+    label o = 0;
+    forAll(patches_, s)
+    {
+        const fvPatch& patch = mesh_.boundary()[patches_[s]];
+        forAll(patch, i)
+        {
+            for (const label pointi : faces[patch.start() + i])
+            {
+                local[o++] = pointValues[pointi];
+            }
+        }
+    }
+
+    return gather(local);
+}
+
+
+void Foam::contactSurfaces::addSlotForces
+(
+    const vectorField& slotForce,
+    vectorField& pointForce,
+    List<vector>& patchForce,
+    vector& torque
+) const
+{
+    const faceList& faces = mesh_.faces();
+    label o = pointStart_[globalFaces_.localStart()];
+
+    forAll(patches_, s)
+    {
+        const fvPatch& patch = mesh_.boundary()[patches_[s]];
+        forAll(patch, i)
+        {
+            const label g = globalFaces_.localStart() + start_[s] + i;
+            for (const label pointi : faces[patch.start() + i])
+            {
+                const vector& f = slotForce[o];
+                pointForce[pointi] += f;
+                patchForce[s] -= f;
+                torque -= (x_[g] + pointOffsets_[o]) ^ f;
+                ++o;
+            }
+        }
+    }
+}
+
+
+// ************************************************************************* //
