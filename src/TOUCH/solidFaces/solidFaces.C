@@ -264,4 +264,10 @@ const Foam::contactSurfaces& Foam::solidFaces::contact() const
 }
 
 
+Foam::contactSurfaces& Foam::solidFaces::contact()
+{
+    return contact_();
+}
+
+
 // ************************************************************************* //

@@ -324,6 +324,13 @@ void Foam::bodyContactFvPatchVectorField::flux
             tC[facei] =
                 (tangential & tC[facei])
               + (nn & (s.t[facei] - s.Up[facei]*(s.p[facei] - momentum)));
+
+            // Side nodes: the damping of the cells' approach
+            // (contactSurfaces), whole
+            if (nodes_)
+            {
+                tC[facei] += nn & traction_[facei];
+            }
         }
     }
 }

@@ -92,6 +92,8 @@ Foam::contactSurfaces::contactSurfaces
     globalFaces_(nContactFaces(mesh, patches_)),
     searchSize_(0),
     mostTensile_(-GREAT),
+    pending_{false, 0, 0, 0, 0, 0},
+    lm_(nullptr),
     friction_(false),
     frictionRatio_(0),
     pairFrictionRatio_(0),
@@ -168,6 +170,7 @@ void Foam::contactSurfaces::update
     pointField x(nLocal);
     vectorField n(nLocal);
     vectorField v(nLocal);
+    vectorField vCell(nLocal);
     vectorField t(nLocal);
     scalarField Zp(nLocal);
     scalarField Zs(nLocal);
@@ -204,6 +207,7 @@ void Foam::contactSurfaces::update
             x[k] = state.xPoints[i];
             n[k] = state.n[i];
             v[k] = state.p[i]/state.rho[i];
+            vCell[k] = lm.primitiveField()[faceCells[i]]/state.rho[i];
             t[k] = perCurrent*state.t[i];
             Zp[k] = perCurrent*state.rho[i]*state.Up[i];
             Zs[k] = perCurrent*state.rho[i]*state.Us[i];
@@ -214,6 +218,10 @@ void Foam::contactSurfaces::update
     x_ = gather(x);
     n_ = gather(n);
     v_ = gather(v);
+    if (anyNodes())
+    {
+        vCell_ = gather(vCell);
+    }
     t_ = gather(t);
     Zp_ = gather(Zp);
     Zs_ = gather(Zs);
@@ -345,11 +353,51 @@ void Foam::contactSurfaces::update
     // The report, at the step's first stage
     if (stage == 1)
     {
-        writeReport
-        (
-            lm, time, nActive, sums.normalForce, sums.area, sums.penetration
-        );
+        bool nodesHeld = false;
+        forAll(patches_, s)
+        {
+            nodesHeld = nodesHeld || (nodes_[s] && held_[s]);
+        }
+
+        if (nodesHeld)
+        {
+            pending_ =
+            {
+                true, time, nActive, sums.normalForce, sums.area,
+                sums.penetration
+            };
+            lm_ = &lm;
+        }
+        else
+        {
+            writeReport
+            (
+                lm, time, nActive, sums.normalForce, sums.area,
+                sums.penetration
+            );
+        }
     }
+}
+
+
+void Foam::contactSurfaces::completeReport
+(
+    const scalar nodeNormalForce,
+    const scalar nodeMostTensile
+)
+{
+    if (!pending_.pending)
+    {
+        return;
+    }
+    pending_.pending = false;
+    mostTensile_ = max(mostTensile_, nodeMostTensile);
+    writeReport
+    (
+        *lm_, pending_.time, pending_.nActive,
+        pending_.normalForce + nodeNormalForce, pending_.area,
+        pending_.penetration
+    );
 }
 
 

@@ -245,20 +245,49 @@ void Foam::contactSurfaces::addPair
     }
 
     // A pair of side nodes: the update holds the nodes side's points on
-    // the other's surface, and their reactions are the whole exchange
-    // (compatible::transferNodeReactions): no force here, the nodes side
-    // alone pushed on (its points held), the other's points free
+    // the other's surface, and their reactions carry the contact force
+    // (compatible::transferNodeReactions); the nodes side alone pushed on
+    // (its points held), the other's points free.  Here only the
+    // upwinding of the two cells' approach, as an interior face's: the
+    // Riemann flux's damping Z1 Z2/(Z1 + Z2) of the cell jump along n
+    // times phi^2, phi the share of it the reconstructed jump keeps, a
+    // force on both cells, equal and opposite, whose power is minus that
+    // times the jump: it never feeds energy, never pulls (none while the
+    // cells part), and takes the velocity jump of an impact start, which
+    // the held points alone left undamped (two bars of non-matching faces
+    // meeting at 2 v gained 6e-6 E0 in the first step under RK2)
     if (nodePair(gi, gj))
     {
+        const scalar cellJump = (vCell_[gi] - vCell_[gj]) & nij;
+        if (cellJump > 0)
+        {
+            const scalar phi =
+                min
+                (
+                    max(((v_[gi] - v_[gj]) & nij)/cellJump, scalar(0)),
+                    scalar(1)
+                );
+            const scalar Zn1 = Zp_[gi];
+            const scalar Zn2 = Zp_[gj];
+            const vector damping
+            (
+                -(Zn1*Zn2/(Zn1 + Zn2))*share*sqr(phi)*cellJump*nij
+            );
+            sums.force[gi] += damping;
+            sums.force[gj] -= damping;
+            sums.normalForce -= damping & nij;
+            const vector m(0.5*(x_[gi] + x_[gj]) ^ damping);
+            sums.moment[gi] += m;
+            sums.moment[gj] -= m;
+        }
+
         const label gNodes = nodes_[slot_[gi]] ? gi : gj;
         sums.weight[gNodes] += share;
         sums.velocitySum[gNodes] += (share*(v_[gNodes] & nij))*nij;
         sums.active[gi] = 1;
         sums.active[gj] = 1;
-        sums.normalForce -= tN*share;
         sums.area += share;
         sums.penetration = max(sums.penetration, -pair.gap);
-        mostTensile_ = max(mostTensile_, tN);
         return;
     }
 

@@ -19,10 +19,13 @@ Description
     body's remainder is then its upwindings' dissipation, at the partner's
     points kappa phi |Pi (f + w R)|^2 >= 0 (their upwinding sees the
     reactions too, so that the surface moves with the net force, not away
-    from the contact).  With both sides held (side both) each side holds
-    its own faces, the two forces differ where the faces do not match,
-    and balancing their sum made energy (a steel ball on a steel plate:
-    validation/sphereImpact/FINDINGS.md 11 and 12).
+    from the contact).  The faces add the damping of the two cells'
+    approach (contactSurfaces), equal and opposite, and a held point
+    whose reaction pulls is let go for the stage (releaseTensileNodes, in
+    compatibleWallForces.C).  With both sides held (side both) each side
+    holds its own faces, the two forces differ where the faces do not
+    match, and balancing their sum made energy (a steel ball on a steel
+    plate: validation/sphereImpact/FINDINGS.md 11 and 12).
 
 \*---------------------------------------------------------------------------*/
 
@@ -44,7 +47,7 @@ void Foam::deformationUpdates::compatible::transferNodeReactions
     }
 
     const fvMesh& mesh = faces_.mesh();
-    const contactSurfaces& contact = faces_.contact();
+    contactSurfaces& contact = faces_.contact();
     const pointField& X = mesh.points();
     const vectorField& pointU =
         mesh.lookupObject<pointVectorField>("pointD").primitiveField();
@@ -57,6 +60,9 @@ void Foam::deformationUpdates::compatible::transferNodeReactions
 
     // Each held point's partner slots and weights, and its share of the
     // reaction spread over them
+    scalar nodeNormalForce = 0;
+    scalar nodeMostTensile = -GREAT;
+
     slotForce_.setSize(contact.nSlots());
     slotForce_ = Zero;
     vectorField& slotForce = slotForce_;
@@ -68,11 +74,13 @@ void Foam::deformationUpdates::compatible::transferNodeReactions
             continue;
         }
 
-        const labelList& meshPoints =
-            mesh.boundary()[patchi].patch().meshPoints();
+        const fvPatch& patch = mesh.boundary()[patchi];
+        const labelList& meshPoints = patch.patch().meshPoints();
         const labelList& fixingFace = fixingFace_[patchi];
         const vectorField& share = nodeShare_[patchi];
         const vectorField& normal = nodeNormal_[patchi];
+        const vectorField& Sf = patch.Sf();
+        const faceList& localFaces = patch.patch().localFaces();
 
         forAll(meshPoints, j)
         {
@@ -100,6 +108,19 @@ void Foam::deformationUpdates::compatible::transferNodeReactions
             {
                 slotForce[holdSlots_[h]] += holdWeights_[h]*share[j];
             }
+
+            // The report: the reaction along the face's outward normal
+            // (negative: pushing on the body, compressive) and as a
+            // traction over the point's share of the face
+            const label facei = fixingFace[j];
+            const scalar outward = share[j] & (Sf[facei]/mag(Sf[facei]));
+            nodeNormalForce -= outward;
+            nodeMostTensile =
+                max
+                (
+                    nodeMostTensile,
+                    outward*localFaces[facei].size()/mag(Sf[facei])
+                );
         }
     }
     holdStart_.append(holdSlots_.size());
@@ -124,6 +145,8 @@ void Foam::deformationUpdates::compatible::transferNodeReactions
     {
         torque += slotTorque;
     }
+
+    contact.completeReport(nodeNormalForce, nodeMostTensile);
 
     forAll(contact.patches(), s)
     {
@@ -228,14 +251,28 @@ void Foam::deformationUpdates::compatible::holdNodesOnSurfaces
            *speed[patchi][j]/count[patchi][j];
     }
 
+    // and the faces' forces (the damping of the cells' approach) at their
+    // cells' velocities
+    const vectorField& lm = faces_.lm().primitiveField();
     forAll(patches, s)
     {
         if (contact.nodesContact(s))
         {
-            refCast<bodyContactFvPatchVectorField>
-            (
-                faces_.lm().boundaryFieldRef()[patches[s]]
-            ).setStagePower(power[s]);
+            bodyContactFvPatchVectorField& condition =
+                refCast<bodyContactFvPatchVectorField>
+                (
+                    faces_.lm().boundaryFieldRef()[patches[s]]
+                );
+            const labelUList& faceCells = condition.patch().faceCells();
+            const scalarField& magSf = condition.patch().magSf();
+            const vectorField& traction = condition.traction();
+            forAll(faceCells, i)
+            {
+                const label celli = faceCells[i];
+                power[s] +=
+                    magSf[i]*(traction[i] & lm[celli])/law_.rho(celli);
+            }
+            condition.setStagePower(power[s]);
         }
     }
 }

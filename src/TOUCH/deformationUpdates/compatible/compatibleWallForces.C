@@ -300,6 +300,12 @@ void Foam::deformationUpdates::compatible::reportWallForces
             nodeShare_[patchi] = Zero;
         }
 
+        // Side nodes: a held point whose reaction pulls is let go
+        if (nodes)
+        {
+            releaseTensileNodes(patchi, ownSum);
+        }
+
         // The wall's part of the constraint's reaction at those points,
         // each rank its share
         vector reaction(Zero);
@@ -337,6 +343,59 @@ void Foam::deformationUpdates::compatible::reportWallForces
         (
             (patch.size() ? faceForce_[patchi] : vector(Zero)) + reaction
         );
+    }
+}
+
+
+void Foam::deformationUpdates::compatible::releaseTensileNodes
+(
+    const label patchi,
+    const tensorField& ownFixed
+)
+{
+    const fvMesh& mesh = faces_.mesh();
+    const fvPatch& patch = mesh.boundary()[patchi];
+    const labelList& meshPoints = patch.patch().meshPoints();
+    const labelList& fixingFace = fixingFace_[patchi];
+    const vectorField& Sf = patch.Sf();
+
+    // Pulls: the contact's part of the reaction along the surface's normal
+    // points out of the body (the outward normal of a face holding it);
+    // decided where a face holds it, then on every rank that shares it
+    labelField pulls(meshPoints.size(), 0);
+    forAll(meshPoints, j)
+    {
+        if (fixingFace[j] >= 0)
+        {
+            const label pointi = meshPoints[j];
+            const vector R
+            (
+                conditionPart
+                (
+                    ownFixed[j],
+                    constraints_.fixedSum(pointi) - ownFixed[j],
+                    constraints_.reaction(pointi, pointForce_[pointi])
+                )
+            );
+            pulls[j] = (R & Sf[fixingFace[j]]) > 0;
+        }
+    }
+    syncTools::syncPointList
+    (
+        mesh, meshPoints, pulls, maxEqOp<label>(), label(0)
+    );
+
+    forAll(meshPoints, j)
+    {
+        if (pulls[j])
+        {
+            const label pointi = meshPoints[j];
+            constraints_.release
+            (
+                pointi, constraints_.fixedSum(pointi) - ownFixed[j]
+            );
+            fixingFace_[patchi][j] = -1;
+        }
     }
 }
 
