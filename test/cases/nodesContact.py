@@ -42,10 +42,9 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 import numpy as np  # noqa: E402
 
 from touchfoam import (contact, foamfile, hertz, mesh, monitor,  # noqa: E402
-                       run, testing)
+                       projectile, run, testing)
 
 NAME = "nodesContact"
-TUTORIAL = "projectileImpact"
 N = 8
 SPEED = 10.0
 END_TIME = "12e-6"
@@ -65,31 +64,9 @@ PARALLEL_TOLERANCE = 1e-12
 
 
 def make_case(root, name, end_time):
-    case = os.path.join(root, name)
-    if os.path.exists(case):
-        shutil.rmtree(case)
-    shutil.copytree(run.tutorial_dir(TUTORIAL), case,
-                    ignore=shutil.ignore_patterns("render.py", "plot.py",
-                                                  "state.py"))
-    for zone in ("projectile", "plate"):
-        prefix = "materials/%s/" % zone
-        run.run(["foamDictionary", "constant/mechanicalProperties",
-                 "-entry", prefix + "vonMisesPlasticCoeffs", "-remove"],
-                case, "foamDictionary")
-        for key, value in (("model", "linearElastic"), ("rho", RHO),
-                           ("E", E), ("nu", NU)):
-            run.foam_set(case, "constant/mechanicalProperties",
-                         prefix + key, value)
-    for patch in ("ballSurface", "plateTop"):
-        run.run(["foamDictionary", "0.orig/U", "-entry",
-                 "boundaryField/%s/friction" % patch, "-remove"],
-                case, "foamDictionary")
-    run.foam_set(case, "0.orig/U", "boundaryField/plateTop/side", "nodes")
-    run.write_options(case, "system/solverOptions",
-                      {"FUpdate": "compatible"},
-                      "The compatible update (the tutorial's is plain)")
-    run.foam_set(case, "system/controlDict", "endTime", end_time)
-    return case
+    return projectile.elastic_copy(
+        root, name, (("projectile", RHO, E), ("plate", RHO, E)), NU,
+        end_time, nodes="plateTop")
 
 
 def allrun(case, extra=()):
@@ -120,16 +97,6 @@ def parallel_difference(serial, parallel):
                                 ).internal(m.n_cells)
         out[field] = float(np.abs(a - b).max()) / s
     return out
-
-
-def cut_ranks(case, patch, nprocs=2):
-    """Number of ranks holding faces of patch."""
-    count = 0
-    for proc in range(nprocs):
-        for p in mesh.PolyMesh(case, processor=proc).patches:
-            if p["name"] == patch and p["nFaces"] > 0:
-                count += 1
-    return count
 
 
 def bars(root):
@@ -190,7 +157,7 @@ def body():
         warnings = f.read().count("sides' forces of the contact between")
 
     diff = parallel_difference(serial, parallel)
-    ranks = cut_ranks(parallel, "plateTop")
+    ranks = mesh.split_count(parallel, 2, "plateTop")
 
     failures = []
     if not growth <= 1e-12:

@@ -108,16 +108,6 @@ def compare(serial, parallel, m):
     return diffs
 
 
-def split_count(case, nprocs, patch):
-    """Number of processors holding faces of patch."""
-    count = 0
-    for proc in range(nprocs):
-        for p in mesh.PolyMesh(case, processor=proc).patches:
-            if p["name"] == patch and p["nFaces"] > 0:
-                count += 1
-    return count
-
-
 def check_case(root, tutorial, n, cut_patch, steps):
     """Serial run, then every decomposition; returns the summary."""
     serial = cases.prepare(tutorial, os.path.join(root, tutorial, "serial"),
@@ -135,7 +125,7 @@ def check_case(root, tutorial, n, cut_patch, steps):
         run.write_options(case, "system/decomposeOptions", decomp)
         run.run(["decomposePar", "-force"], case)
         nprocs = decomp["numberOfSubdomains"]
-        max_split = max(max_split, split_count(case, nprocs, cut_patch))
+        max_split = max(max_split, mesh.split_count(case, nprocs, cut_patch))
         run.run_parallel(["touchFoam"], case, nprocs,
                          timeout=testing.RUN_TIMEOUT)
         run.run(["reconstructPar"], case)

@@ -34,7 +34,6 @@ Work folder: test/runs/stiffPartner/.
 """
 
 import os
-import shutil
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
@@ -42,10 +41,9 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 
 import numpy as np  # noqa: E402
 
-from touchfoam import monitor, run, testing  # noqa: E402
+from touchfoam import monitor, projectile, run, testing  # noqa: E402
 
 NAME = "stiffPartner"
-TUTORIAL = "projectileImpact"
 N = 8
 SPEED = 10
 END_TIME = "4e-6"
@@ -59,30 +57,7 @@ NU = 0.3
 
 
 def make_case(root):
-    case = os.path.join(root, "n%d" % N)
-    if os.path.exists(case):
-        shutil.rmtree(case)
-    shutil.copytree(run.tutorial_dir(TUTORIAL), case,
-                    ignore=shutil.ignore_patterns("render.py", "plot.py",
-                                                  "state.py"))
-    for zone, rho, modulus in MATERIALS:
-        prefix = "materials/%s/" % zone
-        run.run(["foamDictionary", "constant/mechanicalProperties",
-                 "-entry", prefix + "vonMisesPlasticCoeffs", "-remove"],
-                case, "foamDictionary")
-        for key, value in (("model", "linearElastic"), ("rho", rho),
-                           ("E", modulus), ("nu", NU)):
-            run.foam_set(case, "constant/mechanicalProperties",
-                         prefix + key, value)
-    for patch in ("ballSurface", "plateTop"):
-        run.run(["foamDictionary", "0.orig/U", "-entry",
-                 "boundaryField/%s/friction" % patch, "-remove"],
-                case, "foamDictionary")
-    run.write_options(case, "system/solverOptions",
-                      {"FUpdate": "compatible"},
-                      "The compatible update (the tutorial's is plain)")
-    run.foam_set(case, "system/controlDict", "endTime", END_TIME)
-    return case
+    return projectile.elastic_copy(root, "n%d" % N, MATERIALS, NU, END_TIME)
 
 
 def body():

@@ -239,3 +239,13 @@ def processor_count(case):
     while os.path.isdir(os.path.join(case, "processor%d" % n)):
         n += 1
     return n
+
+
+def split_count(case, nprocs, patch):
+    """Number of a decomposed case's processors holding faces of patch."""
+    count = 0
+    for proc in range(nprocs):
+        for p in PolyMesh(case, processor=proc).patches:
+            if p["name"] == patch and p["nFaces"] > 0:
+                count += 1
+    return count

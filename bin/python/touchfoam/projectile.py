@@ -32,6 +32,7 @@ from .contact import depth_below_surface, options, read_contact
 from .foamfile import read_field
 from .mesh import PolyMesh
 from .monitor import read_monitor
+from . import run as _run
 from .run import time_dirs
 
 #: the whole model over the quarter model
@@ -201,3 +202,38 @@ def friction_coefficient(case):
         text = f.read()
     m = re.search(r"muKinetic\s+([-+0-9.eE]+)\s*;", text)
     return float(m.group(1)) if m else 0.0
+
+
+def elastic_copy(root, name, materials, nu, end_time, nodes=None):
+    """A copy of tutorials/projectileImpact in root/name for the contact
+    tests: each zone linearElastic with (zone, rho, E) of materials and
+    Poisson's ratio nu, frictionless, FUpdate compatible, to end_time;
+    nodes: a bodyContact patch given 'side nodes'."""
+    import shutil
+    case = os.path.join(root, name)
+    if os.path.exists(case):
+        shutil.rmtree(case)
+    shutil.copytree(_run.tutorial_dir("projectileImpact"), case,
+                    ignore=shutil.ignore_patterns("render.py", "plot.py",
+                                                  "state.py"))
+    for zone, rho, modulus in materials:
+        prefix = "materials/%s/" % zone
+        _run.run(["foamDictionary", "constant/mechanicalProperties",
+                  "-entry", prefix + "vonMisesPlasticCoeffs", "-remove"],
+                 case, "foamDictionary")
+        for key, value in (("model", "linearElastic"), ("rho", rho),
+                           ("E", modulus), ("nu", nu)):
+            _run.foam_set(case, "constant/mechanicalProperties",
+                          prefix + key, value)
+    for patch in ("ballSurface", "plateTop"):
+        _run.run(["foamDictionary", "0.orig/U", "-entry",
+                  "boundaryField/%s/friction" % patch, "-remove"],
+                 case, "foamDictionary")
+    if nodes:
+        _run.foam_set(case, "0.orig/U", "boundaryField/%s/side" % nodes,
+                      "nodes")
+    _run.write_options(case, "system/solverOptions",
+                       {"FUpdate": "compatible"},
+                       "The compatible update (the tutorial's is plain)")
+    _run.foam_set(case, "system/controlDict", "endTime", end_time)
+    return case

@@ -65,6 +65,21 @@ static vector conditionPart
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
+Foam::vector Foam::deformationUpdates::compatible::conditionReaction
+(
+    const label pointi,
+    const tensor& ownFixed
+) const
+{
+    return conditionPart
+    (
+        ownFixed,
+        constraints_.fixedSum(pointi) - ownFixed,
+        constraints_.reaction(pointi, pointForce_[pointi])
+    );
+}
+
+
 void Foam::deformationUpdates::compatible::addConditionRates
 (
     const label stage,
@@ -316,12 +331,7 @@ void Foam::deformationUpdates::compatible::reportWallForces
                 const label pointi = meshPoints[j];
                 const vector share
                 (
-                    conditionPart
-                    (
-                        ownSum[j],
-                        constraints_.fixedSum(pointi) - ownSum[j],
-                        constraints_.reaction(pointi, pointForce_[pointi])
-                    )/pointMarks_[pointi]
+                    conditionReaction(pointi, ownSum[j])/pointMarks_[pointi]
                 );
                 reaction += share;
                 if (nodes)
@@ -367,17 +377,11 @@ void Foam::deformationUpdates::compatible::releaseTensileNodes
     {
         if (fixingFace[j] >= 0)
         {
-            const label pointi = meshPoints[j];
-            const vector R
-            (
-                conditionPart
+            pulls[j] =
                 (
-                    ownFixed[j],
-                    constraints_.fixedSum(pointi) - ownFixed[j],
-                    constraints_.reaction(pointi, pointForce_[pointi])
-                )
-            );
-            pulls[j] = (R & Sf[fixingFace[j]]) > 0;
+                    conditionReaction(meshPoints[j], ownFixed[j])
+                  & Sf[fixingFace[j]]
+                ) > 0;
         }
     }
     syncTools::syncPointList
