@@ -159,16 +159,8 @@ def body():
     diff = parallel_difference(serial, parallel)
     ranks = mesh.split_count(parallel, 2, "plateTop")
 
-    failures = []
-    if not growth <= 1e-12:
-        failures.append("kinetic + strain energy grew by %.2e E0 in a step"
-                        % growth)
-    if not remainder >= -1e-12:
-        failures.append("the numerical remainder fell by %.2e E0 in a step"
-                        % -remainder)
-    if not drift <= MOMENTUM_DRIFT:
-        failures.append("total p_y drifted by %.2e of |p0| (allowed %.0e)"
-                        % (drift, MOMENTUM_DRIFT))
+    failures = projectile.invariant_failures(growth, remainder, drift,
+                                             MOMENTUM_DRIFT)
     if not balance <= FORCE_BALANCE:
         failures.append("the bodies' forces differ by %.2e of the peak "
                         "(allowed %.0e)" % (balance, FORCE_BALANCE))

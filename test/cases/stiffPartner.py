@@ -92,15 +92,8 @@ def body():
     if warnings != 1 or "ballSurface plateTop" not in log:
         failures.append("%d warnings that the two sides' forces part "
                         "(naming ballSurface plateTop), not 1" % warnings)
-    if not growth <= 1e-12:
-        failures.append("kinetic + strain energy grew by %.2e E0 in a step"
-                        % growth)
-    if not remainder >= -1e-12:
-        failures.append("the numerical remainder fell by %.2e E0 in a step"
-                        % -remainder)
-    if not drift <= MOMENTUM_DRIFT:
-        failures.append("total p_y drifted by %.2e of |p0| (allowed "
-                        "%.0e)" % (drift, MOMENTUM_DRIFT))
+    failures += projectile.invariant_failures(growth, remainder, drift,
+                                              MOMENTUM_DRIFT)
     if not abs(ratio - 1000) < 1e-9:
         failures.append("impedance ratio %.6g, not 1000" % ratio)
     if len(touching) == 0:

@@ -237,3 +237,20 @@ def elastic_copy(root, name, materials, nu, end_time, nodes=None):
                        "The compatible update (the tutorial's is plain)")
     _run.foam_set(case, "system/controlDict", "endTime", end_time)
     return case
+
+
+def invariant_failures(growth, remainder, drift, allowed_drift):
+    """The contact tests' failures of the invariants: kinetic + strain
+    energy grown by growth (E0) in a step, the numerical remainder fallen
+    by -remainder (E0), the total momentum drifted by drift (|p0|)."""
+    failures = []
+    if not growth <= 1e-12:
+        failures.append("kinetic + strain energy grew by %.2e E0 in a step"
+                        % growth)
+    if not remainder >= -1e-12:
+        failures.append("the numerical remainder fell by %.2e E0 in a step"
+                        % -remainder)
+    if not drift <= allowed_drift:
+        failures.append("total p_y drifted by %.2e of |p0| (allowed %.0e)"
+                        % (drift, allowed_drift))
+    return failures
