@@ -123,9 +123,25 @@ def bars(root):
     return r
 
 
+def stiff_warning(root):
+    """The warnings of a run whose side nodes are on a plate of 1000 times
+    the ball's impedance (unstable beyond about 5 us: the ball must be the
+    side held there), to 0.3 us."""
+    case = projectile.elastic_copy(
+        root, "stiff", (("projectile", RHO, E), ("plate", 1000 * RHO,
+                                                 1000 * E)),
+        NU, "3e-7", nodes="plateTop")
+    allrun(case)
+    with open(os.path.join(case, "log.touchFoam")) as f:
+        log = f.read()
+    return log.count("has side nodes and an impedance"), \
+        "plateTop" in log and "ballSurface" in log
+
+
 def body():
     root = testing.work_dir(NAME)
     b = bars(root)
+    stiff_warnings, stiff_named = stiff_warning(root)
     serial = make_case(root, "serial", END_TIME)
     allrun(serial)
     parallel = make_case(root, "parallel", COMPARE_TIME)
@@ -200,7 +216,13 @@ def body():
         failures.append("bars: a held point pulled with %.3g Pa"
                         % b["mostTensile"])
 
+    if stiff_warnings != 1 or not stiff_named:
+        failures.append("side nodes on the 1000 times stiffer plate: %d "
+                        "warnings (naming both patches: %s), not 1"
+                        % (stiff_warnings, stiff_named))
+
     lines = [
+        "side nodes on a 1000 times stiffer plate warned once",
         "bars (2 x 2 on 3 x 3 faces): plateau %.2f %% off Z v at most, "
         "release %.5g s (2 L/c %.5g s), most tensile %.3g Pa, momentum "
         "%.1e, largest energy change %+.2e E0"

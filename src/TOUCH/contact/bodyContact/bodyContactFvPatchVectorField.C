@@ -28,7 +28,8 @@ namespace Foam
         " of this patch: both (each side holds its faces' points at the"
         " pair's contact velocity; faces that match) or nodes (this patch's"
         " points follow the partner surface under them and load its points"
-        " with their reactions; faces that do not match, the finer side)",
+        " with their reactions; faces that do not match: the softer side,"
+        " or the finer where the two are alike)",
         "-", word("both"), entryLimits::oneOf({"both", "nodes"})
     );
 

@@ -94,6 +94,7 @@ Foam::contactSurfaces::contactSurfaces
     mostTensile_(-GREAT),
     pending_{false, 0, 0, 0, 0, 0},
     lm_(nullptr),
+    stiffNodesWarned_(false),
     friction_(false),
     frictionRatio_(0),
     pairFrictionRatio_(0),

@@ -209,6 +209,33 @@ void Foam::contactSurfaces::exchange(volVectorField& lm, faceSums& sums)
 }
 
 
+void Foam::contactSurfaces::warnStiffNodes
+(
+    const label gNodes,
+    const label gSurface
+)
+{
+    if (stiffNodesWarned_ || !(Zp_[gNodes] > stiffNodesRatio*Zp_[gSurface]))
+    {
+        return;
+    }
+    stiffNodesWarned_ = true;
+
+    WarningInFunction
+        << "The bodyContact patch "
+        << mesh_.boundary()[patches_[slot_[gNodes]]].name()
+        << " has side nodes and an impedance " << Zp_[gNodes]/Zp_[gSurface]
+        << " times its partner "
+        << mesh_.boundary()[patches_[slot_[gSurface]]].name() << "'s." << nl
+        << "    Its reactions then load the softer body's points and can"
+        << " make the run unstable (a steel ball on a plate of 1000 times"
+        << " its impedance" << nl
+        << "    grew 13 E0 in a step; 10 times was stable): give side nodes"
+        << " to the softer side (validation/sphereImpact/FINDINGS.md 12)."
+        << " Warned once." << nl << endl;
+}
+
+
 void Foam::contactSurfaces::addPair
 (
     const contactPair& pair,
@@ -282,6 +309,7 @@ void Foam::contactSurfaces::addPair
         }
 
         const label gNodes = nodes_[slot_[gi]] ? gi : gj;
+        warnStiffNodes(gNodes, gNodes == gi ? gj : gi);
         sums.weight[gNodes] += share;
         sums.velocitySum[gNodes] += (share*(v_[gNodes] & nij))*nij;
         sums.active[gi] = 1;

@@ -495,9 +495,10 @@ void Foam::deformationUpdates::compatible::warnImbalance
         << " hold different areas," << nl
         << "    the balancing moves the difference, and the energy can"
         << " grow (doc/userGuide.md, bodies in contact)." << nl
-        << "    'side nodes;' in the finer of the two patches' bodyContact"
-        << " entries holds that side alone on the other's surface and"
-        << " exchanges the force point by point. Warned once."
+        << "    'side nodes;' in the bodyContact entry of the softer patch"
+        << " (the finer where the two are alike) holds that side alone on"
+        << " the other's surface" << nl
+        << "    and exchanges the force point by point. Warned once."
         << nl << endl;
 }
 
