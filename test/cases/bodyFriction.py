@@ -21,7 +21,12 @@ from 0 to about 2L/c_p = 2e-4 s).  Runs:
                 the normal one);
   offset        friction, B's mesh (N + 2) x (N + 2): the faces that meet
                 do not match;
-  compatible    friction with FUpdate compatible: refused.
+  nodes         FUpdate compatible, faceB with side nodes (its points
+                held on faceA's surface), B's mesh (N + 2) x (N + 2):
+                frictionless, mu = 0 and friction (the friction acts at
+                the held points: compatible::addNodeFriction);
+  compatible    friction with FUpdate compatible and neither face with
+                side nodes: refused.
 
 Asserted:
   - every run: total linear momentum constant to 1e-12 |p0| (|p0| the
@@ -59,7 +64,13 @@ Asserted:
     block A against its sliding (its spin below the frictionless run's);
     the relative tangential velocity at the end is below the frictionless
     run's by at least half of 2 mu J_n/M;
-  - FUpdate compatible with friction is refused naming FUpdate and plain.
+  - nodes: the invariants above (angular momentum to 1e-10 included),
+    mu = 0 byte-equal to frictionless, the held points' friction force
+    within the cone of their normal reactions and its power <= 0 at
+    every step (contact.dat's pair columns), the tangential/normal impulse
+    mu within the nodes frictionless run's ratio;
+  - FUpdate compatible with friction and no side nodes is refused naming
+    FUpdate, side nodes and plain.
 Work folders: test/runs/bodyFriction/.
 """
 
@@ -174,9 +185,9 @@ def write(case, rel, cls, obj, body):
         f.write(HEADER % (cls, obj) + body)
 
 
-def make_case(dst, friction=None, nb=N, update="plain"):
+def make_case(dst, friction=None, nb=N, update="plain", nodes=False):
     """The oblique collision at dst; friction: (muStatic, muKinetic) or
-    None; nb: block B's cells a side."""
+    None; nb: block B's cells a side; nodes: faceB with side nodes."""
     run.copy_case(run.tutorial_dir("barCollision"), dst)
     for name in ("0.orig", "0"):
         shutil.rmtree(os.path.join(dst, name), ignore_errors=True)
@@ -189,7 +200,11 @@ def make_case(dst, friction=None, nb=N, update="plain"):
           "mechanicalProperties", MATERIAL)
     text = "" if friction is None else (
         "friction { type coulomb; muStatic %g; muKinetic %g; }" % friction)
-    write(dst, "0/U", "volVectorField", "U", FIELD_U % {"friction": text})
+    field = FIELD_U % {"friction": text}
+    if nodes:
+        field = field.replace("faceB { type bodyContact;",
+                              "faceB { type bodyContact; side nodes;")
+    write(dst, "0/U", "volVectorField", "U", field)
     write(dst, "system/setExprFieldsDict", "dictionary", "setExprFieldsDict",
           EXPRESSIONS % {"v": V, "w": W, "mv": -V, "mw": -W})
     run.foam_set(dst, "system/fvSolution", "TOUCH/FUpdate", update)
@@ -296,24 +311,55 @@ def body():
     mFric = invariants(fric, "friction", failures, lines)
     invariants(offs, "friction, faces not matching", failures, lines)
 
-    # mu = 0: byte-equal to frictionless
-    times = sorted(t for t in run.time_dirs(none) if t > 0)
-    differ = []
-    for t in times:
-        name = run.time_dirs(none)[t]
-        for field in ("lm", "F", "D", "pointD"):
-            a = internal_text(os.path.join(none, name, field))
-            b = internal_text(os.path.join(zero, run.time_dirs(zero)[t],
-                                           field))
-            if a != b:
-                differ.append("%s at %s" % (field, name))
-    lines.append("mu 0 = frictionless: %d times x 4 fields, %d differ"
-                 % (len(times), len(differ)))
-    if differ or not times:
-        failures.append("mu = 0 differs from frictionless: %s"
-                        % ", ".join(differ[:4]))
+    # Side nodes (compatible): faceB's points held on faceA's surface
+    nNone = make_case(os.path.join(root, "nodesFrictionless"), nb=N + 2,
+                      update="compatible", nodes=True)
+    nZero = make_case(os.path.join(root, "nodesMu0"), friction=(0, 0),
+                      nb=N + 2, update="compatible", nodes=True)
+    nFric = make_case(os.path.join(root, "nodesFriction"),
+                      friction=(MU, MU), nb=N + 2, update="compatible",
+                      nodes=True)
+    for case in (nNone, nZero, nFric):
+        run.run(["touchFoam"], case, timeout=testing.RUN_TIMEOUT)
+    for case, label in ((nNone, "nodes frictionless"), (nZero, "nodes mu 0"),
+                        (nFric, "nodes friction")):
+        invariants(case, label, failures, lines)
 
-    # Coulomb cone and friction power, every step
+    # mu = 0: byte-equal to frictionless
+    for a_case, b_case, label in ((none, zero, "mu 0"),
+                                  (nNone, nZero, "nodes mu 0")):
+        times = sorted(t for t in run.time_dirs(a_case) if t > 0)
+        differ = []
+        for t in times:
+            name = run.time_dirs(a_case)[t]
+            for field in ("lm", "F", "D", "pointD"):
+                a = internal_text(os.path.join(a_case, name, field))
+                b = internal_text(os.path.join(
+                    b_case, run.time_dirs(b_case)[t], field))
+                if a != b:
+                    differ.append("%s at %s" % (field, name))
+        lines.append("%s = frictionless: %d times x 4 fields, %d differ"
+                     % (label, len(times), len(differ)))
+        if differ or not times:
+            failures.append("%s differs from frictionless: %s"
+                            % (label, ", ".join(differ[:4])))
+
+    # Coulomb cone and friction power, every step (with side nodes the
+    # pairs' columns are the held points')
+    rows = contact.read_contact(nFric)
+    ratio = np.max(rows["maxPairFrictionRatio"])
+    power = np.max(rows["maxPairFrictionPower"])
+    lines.append("nodes friction: max |F_t|/N of a held point %.6f (mu %g),"
+                 " max point friction power %.1e W" % (ratio, MU, power))
+    if ratio > MU * (1 + 1e-12):
+        failures.append("nodes friction: |F_t|/N = %.15g > mu" % ratio)
+    if not ratio > 0.5 * MU:
+        failures.append("nodes friction: |F_t|/N at most %.3g: the held "
+                        "points do not slide at mu" % ratio)
+    if power > 0:
+        failures.append("nodes friction: a point's friction power %.2e > 0"
+                        % power)
+
     for case, label in ((fric, "friction"), (offs, "offset")):
         rows = contact.read_contact(case)
         ratio = np.max(rows["maxFrictionRatio"])
@@ -364,6 +410,22 @@ def body():
         b1 = bodies(case, folders[max(folders)], N * N)
         return b0, b1, [b1[k]["p"] - b0[k]["p"] for k in (0, 1)]
 
+    # Side nodes: the same closed form, to within their frictionless
+    # run's own ratio
+    _, _, jNodesF = impulses(nFric)
+    _, _, jNodesN = impulses(nNone)
+    nodesTilt = abs(jNodesN[0][1] / jNodesN[0][0])
+    for k, label in enumerate("AB"):
+        ratio = abs(jNodesF[k][1] / jNodesF[k][0])
+        lines.append("nodes, block %s: impulse normal %.4e, tangential "
+                     "%.4e, ratio %.4f (frictionless %.4f)"
+                     % (label, jNodesF[k][0], jNodesF[k][1], ratio,
+                        nodesTilt))
+        if abs(ratio - MU) > nodesTilt or nodesTilt > 0.2 * MU:
+            failures.append("nodes, block %s: tangential/normal impulse "
+                            "%.4f, sliding Coulomb %g, frictionless %.4f"
+                            % (label, ratio, MU, nodesTilt))
+
     b0, bF, jF = impulses(fric)
     _, bN, jN = impulses(none)
     tilt = abs(jN[0][1] / jN[0][0])
@@ -410,19 +472,21 @@ def body():
         failures.append("relative tangential velocity %.4f, frictionless "
                         "%.4f: not reduced" % (wF, wN))
 
-    # FUpdate compatible with friction is refused
+    # FUpdate compatible with friction and no side nodes is refused
     comp = make_case(os.path.join(root, "compatible"), friction=(MU, MU),
                      update="compatible")
     try:
         run.run(["touchFoam"], comp, name="touchFoam",
                 timeout=testing.RUN_TIMEOUT)
-        failures.append("compatible with friction ran")
+        failures.append("compatible with friction and no side nodes ran")
     except run.RunError:
         with open(os.path.join(comp, "log.touchFoam")) as f:
             log = f.read()
-        if "FUpdate" not in log or "plain" not in log:
+        if any(word not in log for word in ("FUpdate", "side nodes",
+                                            "plain", "faceA", "faceB")):
             failures.append("compatible with friction: the refusal does "
-                            "not name FUpdate and plain")
+                            "not name the patches, FUpdate, side nodes "
+                            "and plain")
     return testing.verdict(lines, failures)
 
 

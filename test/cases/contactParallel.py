@@ -25,7 +25,9 @@ digits so that equal numbers are equal doubles:
   slidingBlock  the block sliding on the rigid wall 'bottom' with Coulomb
                 friction (-n 4: 8 wall faces), serial to 0.35 s written
                 every 0.01 s; the parallel runs restart from its 0.32 s
-                and go through the stop at 0.34 s to 0.35 s.
+                and go through the stop at 0.34 s to 0.35 s; with FUpdate
+                plain (the tutorial's) and compatible (the friction at
+                the wall's held points).
 
 Decompositions (system/decomposeOptions: numberOfSubdomains, method,
 coefficients):
@@ -334,13 +336,17 @@ def bars(root, update, m, decompositions, tol, problems):
                worst[0], worst[1]))
 
 
-def block(root, problems):
+def block(root, problems, update="plain"):
     """slidingBlock with friction: serial to 0.35 s; the parallel runs
     restart from its time 0.32 s (the friction state read back on each
-    rank), through the stop at 0.34 s; the report."""
+    rank), through the stop at 0.34 s; the report.  update: the tutorial's
+    FUpdate plain, or compatible (the friction at the wall's held
+    points)."""
     patches = ("bottom",)
+    folder = "block" if update == "plain" else "block" + update
     serial = run.copy_case(run.tutorial_dir("slidingBlock"),
-                           os.path.join(root, "block", "serial"))
+                           os.path.join(root, folder, "serial"))
+    run.foam_set(serial, "system/fvSolution", "TOUCH/FUpdate", update)
     run.write_options(serial, "system/meshOptions", {"N": 4, "Nx": 8})
     run.foam_set(serial, "system/controlDict", "endTime", 0.35)
     for key, value in cases.precise_output().items():
@@ -349,7 +355,7 @@ def block(root, problems):
     run.restore0(serial)
     run.run(["blockMesh"], serial)
     run.run(["touchFoam"], serial, timeout=testing.RUN_TIMEOUT)
-    base = os.path.join(root, "block", "base")
+    base = os.path.join(root, folder, "base")
     shutil.copytree(serial, base, ignore=lambda folder, names: [
         n for n in names if folder == serial and (
             n in ("postProcessing",) or n.startswith("log.")
@@ -361,22 +367,22 @@ def block(root, problems):
         ("structuredscotch3", structured("scotch", 3, patches), patches),
         ("metis3", plain_method("metis", 3), ())]
     for label, decomp, must_cut in decompositions:
-        case = os.path.join(root, "block", label)
+        case = os.path.join(root, folder, label)
         nprocs = run_decomposed(base, case, decomp)
         counts = faces_per_processor(case, nprocs, patches)
         rows.append("%s %s" % (label, "+".join(map(str, counts["bottom"]))))
         if must_cut and min(counts["bottom"]) == 0:
             problems.append("block %s: the wall not on every rank (%s)"
                             % (label, counts["bottom"]))
-        d = compare("block " + label, case, serial, n_cells, patches,
+        d = compare(folder + " " + label, case, serial, n_cells, patches,
                     1.0, problems, after=float(T_PARALLEL))
         if d[0] >= worst[0]:
             worst = (d[0], "%s, %s" % (d[1], label))
     slip = patch_entries(run.time_dir(serial, 0.35), patches)["bottom"]
-    return ("slidingBlock with friction, parallel from %s s to 0.35 s (wall"
-            " faces per rank: %s; 'slip' written: %s): max rel diff %.1e"
-            " (%s)" % (T_PARALLEL, ", ".join(rows), "slip" in slip,
-                       worst[0], worst[1]))
+    return ("slidingBlock with friction (FUpdate %s), parallel from %s s to"
+            " 0.35 s (wall faces per rank: %s; 'slip' written: %s): max rel"
+            " diff %.1e (%s)" % (update, T_PARALLEL, ", ".join(rows),
+                                 "slip" in slip, worst[0], worst[1]))
 
 
 def ball(root, problems):
@@ -431,6 +437,7 @@ def body():
         ("cut3", manual(3), contact)], TOL_CUT, problems))
     lines.append(ball(root, problems))
     lines.append(block(root, problems))
+    lines.append(block(root, problems, "compatible"))
     return testing.verdict(lines, problems)
 
 

@@ -50,9 +50,11 @@ Asserted:
     p_y) and gains spin against its sliding (L_z about the centre < 0
     for a block sliding along +x on a wall below it), 100 times the
     frictionless one;
-  - FUpdate compatible with friction stops the run naming FUpdate and
-    plain (validation/slidingBlock/FINDINGS.md: the block decelerated 4 %
-    too little, or lifted off and gained energy).
+  - FUpdate compatible (the friction at the wall's held points, about
+    their normal forces: compatible::addWallFriction): the same
+    deceleration, distance and rest, the per-step friction force and
+    energy checks, the wall's work never rising in a step, mu = 0 equal to
+    the frictionless wall byte for byte, and a restart at T0 bit for bit.
 Work folders: test/runs/slidingBlock/.
 """
 
@@ -85,9 +87,11 @@ FRICTION_LINE = re.compile(
 
 
 def make_case(root, name, end, friction=(MU_S, MU_K), precise=False,
-              debug=False, write=0.05):
-    """A meshed copy of the tutorial; friction None: no friction entry."""
+              debug=False, write=0.05, update="plain"):
+    """A meshed copy of the tutorial; friction None: no friction entry;
+    update: its FUpdate."""
     case = run.copy_case(run.tutorial_dir(NAME), os.path.join(root, name))
+    run.foam_set(case, "system/fvSolution", "TOUCH/FUpdate", update)
     run.write_options(case, "system/meshOptions", {"N": N, "Nx": 2 * N})
     run.foam_set(case, "system/controlDict", "endTime", end)
     if precise:
@@ -113,24 +117,122 @@ def mass_of(case):
     return cases.material(case)["rho"] * float(PolyMesh(case).cell_volumes.sum())
 
 
-def slide_checks(root, failures):
-    case = make_case(root, "slide", 0.45, debug=True)
-    log = run.run(["touchFoam"], case, timeout=testing.RUN_TIMEOUT)
+def slide_against_closed_form(case, label, failures):
+    """The deceleration, the distance and the rest after the stop against
+    Coulomb's rigid block; the line, or None if it never stopped."""
     M = mass_of(case)
     s = sliding.slide(case, M, np.array([V0, 0, 0]), MU_K, G)
     if s["t_stop"] is None:
-        failures.append("slide: never stopped")
-        return "slide: never stopped"
+        failures.append("%s: never stopped" % label)
+        return None
     dec = s["deceleration"] / s["deceleration_ref"] - 1
     dist = s["distance"] / s["distance_ref"] - 1
     rest = s["rest_speed"] / V0
     if abs(dec) > 0.02:
-        failures.append("slide: deceleration %+.2f %% of mu g" % (100 * dec))
+        failures.append("%s: deceleration %+.2f %% of mu g"
+                        % (label, 100 * dec))
     if abs(dist) > 0.03:
-        failures.append("slide: distance %+.2f %% of v0^2/(2 mu g)"
-                        % (100 * dist))
+        failures.append("%s: distance %+.2f %% of v0^2/(2 mu g)"
+                        % (label, 100 * dist))
     if not rest < 1e-3:
-        failures.append("slide: not at rest after the stop (%.1e v0)" % rest)
+        failures.append("%s: not at rest after the stop (%.1e v0)"
+                        % (label, rest))
+    return ("deceleration %+.2f %% of mu g, distance %+.3f %% of v0^2/(2 mu"
+            " g), at rest %.1e v0 from 0.02 s after the stop (%.4f s)"
+            % (100 * dec, 100 * dist, rest, s["t_stop"]))
+
+
+def step_checks(case, label, failures):
+    """Per step: the friction force from the momentum within muStatic
+    times the monitor's normal wall force, the energy never growing; the
+    line."""
+    M = mass_of(case)
+    mon = read_monitor(case)
+    t = np.concatenate([[0.0], mon["Time"]])
+    px = np.concatenate([[M * V0], mon["p"][:, 0]])
+    Ft = np.abs(np.diff(px) / np.diff(t))
+    Fn = mon["wallForce(bottom)"]
+    over = float(np.max(Ft - MU_S * Fn)) / (M * G)
+    sliding_steps = np.abs(px[1:]) > 0.01 * M * V0
+    ratio = float(np.median(Ft[sliding_steps] / np.maximum(Fn[sliding_steps],
+                                                            1e-300)))
+    if over > 1e-9:
+        failures.append("%s: |dp_x/dt| exceeds muStatic times the wall's"
+                        " normal force by %.1e M g" % (label, over))
+    E = mon["totalEnergy"]
+    growth = float(np.max(np.diff(E))) / (0.5 * M * V0 ** 2)
+    if growth > 1e-12:
+        failures.append("%s: the energy grew by %.1e K0 in a step"
+                        % (label, growth))
+    return ("per step |dp_x/dt| - muS F_n <= %.1e M g, median |dp_x/dt|/F_n"
+            " sliding %.4f (muK %.2f); energy change per step <= %.1e K0"
+            % (over, ratio, MU_K, growth))
+
+
+def slide_compatible(root, failures):
+    """FUpdate compatible: the friction at the wall's held points
+    (compatible::addWallFriction), against the same closed forms; the
+    wall's work (the friction's, at the held points, and its damping's)
+    never positive in a step; mu = 0 equal to the frictionless wall; a
+    restart through the stop bit for bit (a point carries no state)."""
+    label = "compatible"
+    case = make_case(root, "slideCompatible", 0.45, update="compatible")
+    run.run(["touchFoam"], case, timeout=testing.RUN_TIMEOUT)
+    closed = slide_against_closed_form(case, label, failures)
+    steps = step_checks(case, label, failures)
+    mon = read_monitor(case)
+    K0 = 0.5 * mass_of(case) * V0 ** 2
+    work = mon["boundaryWork(bottom)"]
+    rise = float(np.max(np.diff(np.concatenate([[0.0], work])))) / K0
+    if rise > 1e-12:
+        failures.append("compatible: the wall's work rose by %.1e K0 in a"
+                        " step" % rise)
+    if not work[-1] < -0.5 * K0:
+        failures.append("compatible: the wall took %.3f K0, not the"
+                        " block's kinetic energy" % (-work[-1] / K0))
+
+    zero = make_case(root, "muZeroCompatible", 0.05, friction=(0, 0),
+                     precise=True, update="compatible")
+    none = make_case(root, "frictionlessCompatible", 0.05, friction=None,
+                     precise=True, update="compatible")
+    for c in (zero, none):
+        run.run(["touchFoam"], c, timeout=testing.RUN_TIMEOUT)
+    differ, n = same_outputs(zero, none)
+    if differ or n < 1:
+        failures.append("compatible: mu = 0 differs from the frictionless"
+                        " wall: %s" % ", ".join(differ[:5]))
+
+    whole = make_case(root, "wholeCompatible", T1, precise=True, write=0.01,
+                      update="compatible")
+    run.run(["touchFoam"], whole, timeout=testing.RUN_TIMEOUT)
+    cut = make_case(root, "restartedCompatible", T0, precise=True,
+                    write=0.01, update="compatible")
+    run.run(["touchFoam"], cut, timeout=testing.RUN_TIMEOUT)
+    run.foam_set(cut, "system/controlDict", "endTime", T1)
+    run.run(["touchFoam"], cut, "touchFoam.restart",
+            timeout=testing.RUN_TIMEOUT)
+    nc = PolyMesh(whole).n_cells
+    d_cut = max(float(np.abs(
+        testing.read_internal(run.time_dir(cut, T1), f, nc)
+        - testing.read_internal(run.time_dir(whole, T1), f, nc)).max())
+        for f in ("lm", "F"))
+    if d_cut != 0:
+        failures.append("compatible: the restart at %g s differs by %.1e"
+                        % (T0, d_cut))
+    return ("compatible N %d: %s; %s; the wall's work -%.4f K0, never rising"
+            " (largest step %+.1e K0); mu = 0: %d written times and the"
+            " monitor %s the frictionless wall's; restart at %g s: lm, F at"
+            " %g s %.1e off"
+            % (N, closed, steps, -work[-1] / K0, rise, n,
+               "differ from" if differ else "equal to", T0, T1, d_cut))
+
+
+def slide_checks(root, failures):
+    case = make_case(root, "slide", 0.45, debug=True)
+    log = run.run(["touchFoam"], case, timeout=testing.RUN_TIMEOUT)
+    closed = slide_against_closed_form(case, "slide", failures)
+    if closed is None:
+        return "slide: never stopped"
 
     # Every stage's friction checks from the wall's debug output
     rows = []
@@ -166,31 +268,10 @@ def slide_checks(root, failures):
 
     # The friction force of every step from the momentum, against the
     # monitor's normal wall force
-    mon = read_monitor(case)
-    t = np.concatenate([[0.0], mon["Time"]])
-    px = np.concatenate([[M * V0], mon["p"][:, 0]])
-    Ft = np.abs(np.diff(px) / np.diff(t))
-    Fn = mon["wallForce(bottom)"]
-    over = float(np.max(Ft - MU_S * Fn)) / (M * G)
-    sliding_steps = np.abs(px[1:]) > 0.01 * M * V0
-    ratio = float(np.median(Ft[sliding_steps] / np.maximum(Fn[sliding_steps],
-                                                            1e-300)))
-    if over > 1e-9:
-        failures.append("slide: |dp_x/dt| exceeds muStatic times the wall's"
-                        " normal force by %.1e M g" % over)
-    E = mon["totalEnergy"]
-    growth = float(np.max(np.diff(E))) / (0.5 * M * V0 ** 2)
-    if growth > 1e-12:
-        failures.append("slide: the energy grew by %.1e K0 in a step"
-                        % growth)
-    return ("slide N %d: deceleration %+.2f %% of mu g, distance %+.3f %%"
-            " of v0^2/(2 mu g), at rest %.1e v0 from 0.02 s after the stop"
-            " (%.4f s); %d stages: max (|t_t| - mu p_N)/(mu p_N) %.1e, max"
-            " face work rate %.1e mu p_N v0 |S|, friction work %.4f K0; per step |dp_x/dt| - muS F_n"
-            " <= %.1e M g, median |dp_x/dt|/F_n sliding %.4f (muK %.2f);"
-            " energy change per step <= %.1e K0"
-            % (N, 100 * dec, 100 * dist, rest, s["t_stop"], len(rows), cone,
-               worst_power, work, over, ratio, MU_K, growth))
+    steps = step_checks(case, "slide", failures)
+    return ("slide N %d: %s; %d stages: max (|t_t| - mu p_N)/(mu p_N) %.1e,"
+            " max face work rate %.1e mu p_N v0 |S|, friction work %.4f K0;"
+            " %s" % (N, closed, len(rows), cone, worst_power, work, steps))
 
 
 def strip_friction(text):
@@ -344,27 +425,11 @@ def oblique(root, failures):
                spin_f[-1] / spin_scale))
 
 
-def refusal(root, failures):
-    """Friction with the compatible update is refused, naming FUpdate."""
-    case = make_case(root, "compatible", 0.01)
-    run.foam_set(case, "system/fvSolution", "TOUCH/FUpdate", "compatible")
-    try:
-        run.run(["touchFoam"], case, timeout=testing.RUN_TIMEOUT)
-        message = None
-    except run.RunError as err:
-        message = str(err)
-    if message is None or "FUpdate" not in message \
-            or "plain" not in message:
-        failures.append("friction with FUpdate compatible was not refused"
-                        " naming FUpdate and plain")
-        return "compatible update: NOT refused"
-    return "compatible update: refused naming FUpdate and plain"
-
-
 def body():
     root = testing.work_dir(NAME)
     lines, failures = [], []
-    for check in (slide_checks, zero_mu, restart, oblique, refusal):
+    for check in (slide_checks, zero_mu, restart, oblique,
+                  slide_compatible):
         lines.append(check(root, failures))
     return testing.verdict(lines, failures)
 

@@ -208,7 +208,8 @@ def elastic_copy(root, name, materials, nu, end_time, nodes=None):
     """A copy of tutorials/projectileImpact in root/name for the contact
     tests: each zone linearElastic with (zone, rho, E) of materials and
     Poisson's ratio nu, frictionless, FUpdate compatible, to end_time;
-    nodes: a bodyContact patch given 'side nodes'."""
+    nodes: the bodyContact patch given 'side nodes' (None: both patches
+    'side both', whatever the tutorial gives)."""
     import shutil
     case = os.path.join(root, name)
     if os.path.exists(case):
@@ -229,12 +230,11 @@ def elastic_copy(root, name, materials, nu, end_time, nodes=None):
         _run.run(["foamDictionary", "0.orig/U", "-entry",
                   "boundaryField/%s/friction" % patch, "-remove"],
                  case, "foamDictionary")
-    if nodes:
-        _run.foam_set(case, "0.orig/U", "boundaryField/%s/side" % nodes,
-                      "nodes")
+        _run.foam_set(case, "0.orig/U", "boundaryField/%s/side" % patch,
+                      "nodes" if patch == nodes else "both")
     _run.write_options(case, "system/solverOptions",
                        {"FUpdate": "compatible"},
-                       "The compatible update (the tutorial's is plain)")
+                       "The compatible update (the tutorial's too)")
     _run.foam_set(case, "system/controlDict", "endTime", end_time)
     return case
 

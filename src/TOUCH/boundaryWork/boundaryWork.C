@@ -127,6 +127,21 @@ void Foam::boundaryWork::addStage
             patchWork += work;
             bodyWork_[cellBody_[celli]] += work;
         }
+
+        // and the forces the update applied at its points
+        const scalarField* pointPower =
+            isA<solidFluxFvPatchVectorField>(pf)
+          ? refCast<const solidFluxFvPatchVectorField>(pf).stagePointPower()
+          : nullptr;
+        if (pointPower)
+        {
+            forAll(*pointPower, i)
+            {
+                const scalar work = weight*(*pointPower)[i];
+                patchWork += work;
+                bodyWork_[cellBody_[faceCells[i]]] += work;
+            }
+        }
         patchWork_[patchi] += patchWork;
     }
 

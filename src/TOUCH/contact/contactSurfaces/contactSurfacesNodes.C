@@ -284,4 +284,68 @@ void Foam::contactSurfaces::addSlotForces
 }
 
 
+Foam::scalar Foam::contactSurfaces::pairShearImpedance
+(
+    const label k,
+    const label slot
+) const
+{
+    const label gk = globalFaces_.localStart() + k;
+    const label g = findLower(pointStart_, slot + 1);
+    return Zs_[gk]*Zs_[g]/(Zs_[gk] + Zs_[g]);
+}
+
+
+void Foam::contactSurfaces::reportNodeFriction
+(
+    const scalar ratio,
+    const scalar power
+)
+{
+    pairFrictionRatio_ = max(pairFrictionRatio_, ratio);
+    pairFrictionPower_ = max(pairFrictionPower_, power);
+}
+
+
+void Foam::contactSurfaces::checkNodesFriction
+(
+    const volVectorField& lm,
+    const dictionary& controls
+) const
+{
+    forAll(patches_, s)
+    {
+        const bodyContactFvPatchVectorField& condition =
+            refCast<const bodyContactFvPatchVectorField>
+            (
+                lm.boundaryField()[patches_[s]]
+            );
+        if (condition.friction().frictionless() || nodes_[s])
+        {
+            continue;
+        }
+        // A patch's contact with itself is left to its faces (a surface
+        // cannot hold its own points): only pairs of two patches
+        forAll(patches_, t)
+        {
+            if (t != s && allowed_[s][t] && !nodes_[t])
+            {
+                FatalIOErrorInFunction(controls)
+                    << "Patches " << mesh_.boundary()[patches_[s]].name()
+                    << " and " << mesh_.boundary()[patches_[t]].name()
+                    << " (bodyContact) may touch with friction, and FUpdate"
+                    << " is compatible (" << controls.name() << "): its"
+                    << " normal contact force is the reaction of the points"
+                    << " the contact holds, which friction needs at points"
+                    << " held on one side" << nl
+                    << "Valid: 'side nodes;' on one of the two patches (the"
+                    << " softer, or the finer where they are alike), or"
+                    << " FUpdate plain" << nl
+                    << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+
 // ************************************************************************* //

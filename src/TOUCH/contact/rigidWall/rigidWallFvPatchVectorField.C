@@ -260,7 +260,9 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     friction_(frictionLaw::New(dictionary())),
     frictionTraction_(),
     slip_(),
-    updateChecked_(false)
+    updateChecked_(false),
+    pointFriction_(false),
+    pointPower_()
 {}
 
 
@@ -296,7 +298,9 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     friction_(frictionLaw::New(dict)),
     frictionTraction_(friction_->frictionless() ? 0 : p.size(), Zero),
     slip_(readSlip(dict)),
-    updateChecked_(false)
+    updateChecked_(false),
+    pointFriction_(false),
+    pointPower_()
 {
     checkSide();
 }
@@ -339,7 +343,9 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
       ? vectorField()
       : vectorField(ptf.slip_, mapper)
     ),
-    updateChecked_(false)
+    updateChecked_(false),
+    pointFriction_(false),
+    pointPower_()
 {}
 
 
@@ -365,7 +371,9 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     friction_(ptf.friction_->clone()),
     frictionTraction_(ptf.frictionTraction_),
     slip_(ptf.slip_),
-    updateChecked_(ptf.updateChecked_)
+    updateChecked_(ptf.updateChecked_),
+    pointFriction_(ptf.pointFriction_),
+    pointPower_()
 {}
 
 
@@ -392,7 +400,9 @@ Foam::rigidWallFvPatchVectorField::rigidWallFvPatchVectorField
     friction_(ptf.friction_->clone()),
     frictionTraction_(ptf.frictionTraction_),
     slip_(ptf.slip_),
-    updateChecked_(ptf.updateChecked_)
+    updateChecked_(ptf.updateChecked_),
+    pointFriction_(ptf.pointFriction_),
+    pointPower_()
 {}
 
 

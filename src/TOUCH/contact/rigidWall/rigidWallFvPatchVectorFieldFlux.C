@@ -22,6 +22,13 @@ void Foam::rigidWallFvPatchVectorField::updateFriction
     const interiorState& s
 )
 {
+    // The compatible update applies the friction at the held points
+    if (pointFriction_)
+    {
+        frictionTraction_ = Zero;
+        return;
+    }
+
     const vector wallVelocity(velocity_->value(s.time));
     const scalar wallNormalSpeed = wallVelocity & normal_;
     const tensor tangential(tensor::I - sqr(normal_));
@@ -128,27 +135,15 @@ void Foam::rigidWallFvPatchVectorField::checkUpdate()
         return;
     }
 
-    if (update == "compatible")
-    {
-        FatalIOErrorInFunction(controls)
-            << "Patch " << patch().name() << " is a rigidWall with friction"
-            << " and FUpdate is compatible (" << controls.name() << "):"
-            << " its normal wall force is the point constraint's reaction,"
-            << " which the friction law does not see (a sliding block"
-            << " decelerated 4 % too little, or lifted off and gained"
-            << " energy)" << nl
-            << "Valid FUpdate with friction: plain (constrained: with a"
-            << " warning)" << nl
-            << exit(FatalIOError);
-    }
-
-    if (update != "plain")
+    // compatible: the friction acts at the held points, about their
+    // reactions (compatible::addWallFriction)
+    if (update != "plain" && update != "compatible")
     {
         WarningInFunction
             << "Patch " << patch().name() << ": friction with FUpdate "
             << update << " is not validated (the sliding block's energy"
-            << " grew by 2e-7 of its kinetic energy in steps); plain is"
-            << endl;
+            << " grew by 2e-7 of its kinetic energy in steps); plain and"
+            << " compatible are" << endl;
     }
 }
 

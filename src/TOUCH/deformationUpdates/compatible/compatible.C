@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "compatible.H"
+#include "rigidWallFvPatchVectorField.H"
 #include "contactSurfaces.H"
 #include "bodyContactFvPatchVectorField.H"
 #include "declaredEntry.H"
@@ -171,6 +172,13 @@ Foam::deformationUpdates::compatible::compatible
     hasNodeContact_(false),
     nodeShare_(faces.mesh().boundary().size()),
     nodeNormal_(faces.mesh().boundary().size()),
+    nodeFriction_(false),
+    wallFriction_(false),
+    frictionArea_(faces.mesh().boundary().size()),
+    frictionMarks_(faces.mesh().boundary().size()),
+    wallShare_(faces.mesh().boundary().size()),
+    nodeNormalForce_(0),
+    nodeMostTensile_(-GREAT),
     imbalanceWarned_(false),
     largestContactForce_(0),
     releasing_(releasesOnForce(faces.lm())),
@@ -211,8 +219,42 @@ Foam::deformationUpdates::compatible::compatible
                 nodeShare_.set(patchi, new vectorField(nPoints, Zero));
                 nodeNormal_.set(patchi, new vectorField(nPoints, Zero));
                 hasNodeContact_ = true;
+                if (!condition.friction().frictionless())
+                {
+                    frictionArea_.set(patchi, new scalarField(nPoints, Zero));
+                    frictionMarks_.set(patchi, new labelField(nPoints, 1));
+                    nodeFriction_ = true;
+                }
             }
         }
+
+        // A rigid wall with friction: the friction acts at the points it
+        // holds, about their reactions
+        if (isA<rigidWallFvPatchVectorField>(pf))
+        {
+            rigidWallFvPatchVectorField& wall =
+                refCast<rigidWallFvPatchVectorField>(pf);
+            if (!wall.friction().frictionless())
+            {
+                wall.setPointFriction();
+                const label nPoints = wall.patch().patch().nPoints();
+                frictionArea_.set(patchi, new scalarField(nPoints, Zero));
+                frictionMarks_.set(patchi, new labelField(nPoints, 1));
+                wallShare_.set(patchi, new vectorField(nPoints, Zero));
+                wallFriction_ = true;
+            }
+        }
+    }
+
+    // Friction between bodies acts at the held points of side nodes: a
+    // pair of surfaces with friction needs one
+    if (hasContact_)
+    {
+        faces.contact().checkNodesFriction(faces.lm(), controls);
+    }
+    if (nodeFriction_ || wallFriction_)
+    {
+        calcFrictionAreas();
     }
 
     initLosses();
@@ -287,6 +329,10 @@ void Foam::deformationUpdates::compatible::rates
         interpolateVelocity(pointV);
     }
     constraints_.constrain(pointV);
+    if (nodeFriction_ || wallFriction_)
+    {
+        pointVBeforeUpwinding_ = pointV;
+    }
 
     if (pointUpwinding_ > 0)
     {
@@ -308,8 +354,12 @@ void Foam::deformationUpdates::compatible::rates
     }
 
     // Points held on a partner surface (side nodes) follow its points'
-    // final velocities
+    // final velocities; their friction acts at the velocities before
     holdNodesOnSurfaces(pointV);
+    if (wallFriction_)
+    {
+        addWallFriction(torque);
+    }
 
     // F follows the point motion alone (no upwind part: see the header)
     addFaceMeanFRate(pointV, FRate);

@@ -141,12 +141,28 @@ void Foam::deformationUpdates::compatible::transferNodeReactions
     syncTools::syncPointList(mesh, added, plusEqOp<vector>(), vector::zero);
     pointForce_ += added;
 
+    // The partner's torque at the held points, where the held side's is
+    // taken (reportWallForces): each reaction and its opposite act on one
+    // line, also where a point lies beyond the partner's edge and its
+    // weights are clipped to the face (taken at the slots, the two blocks
+    // of an oblique collision drifted by 4e-4 of their angular momentum)
     if (pointDisplacement_)
     {
-        torque += slotTorque;
+        forAll(holdPatch_, h)
+        {
+            const label patchi = holdPatch_[h];
+            const label j = holdIndex_[h];
+            const label pointi =
+                mesh.boundaryMesh()[patchi].meshPoints()[j];
+            torque -=
+                (X[pointi] + (*pointDisplacement_)[pointi])
+              ^ nodeShare_[patchi][j];
+        }
     }
 
-    contact.completeReport(nodeNormalForce, nodeMostTensile);
+    // The report waits for the stage's friction (holdNodesOnSurfaces)
+    nodeNormalForce_ = nodeNormalForce;
+    nodeMostTensile_ = nodeMostTensile;
 
     forAll(contact.patches(), s)
     {
@@ -171,7 +187,7 @@ void Foam::deformationUpdates::compatible::holdNodesOnSurfaces
     }
 
     const fvMesh& mesh = faces_.mesh();
-    const contactSurfaces& contact = faces_.contact();
+    contactSurfaces& contact = faces_.contact();
     // The partners' points' velocities, final (their upwinding by the
     // stresses' and the reactions' nodal forces included)
     const vectorField slotV(contact.gatherSlots(pointV));
@@ -251,6 +267,12 @@ void Foam::deformationUpdates::compatible::holdNodesOnSurfaces
            *speed[patchi][j]/count[patchi][j];
     }
 
+    // the friction's at the points' velocities before the upwindings
+    if (nodeFriction_)
+    {
+        addNodeFriction(power);
+    }
+
     // and the faces' forces (the damping of the cells' approach) at their
     // cells' velocities
     const vectorField& lm = faces_.lm().primitiveField();
@@ -275,6 +297,8 @@ void Foam::deformationUpdates::compatible::holdNodesOnSurfaces
             condition.setStagePower(power[s]);
         }
     }
+
+    contact.completeReport(nodeNormalForce_, nodeMostTensile_);
 }
 
 

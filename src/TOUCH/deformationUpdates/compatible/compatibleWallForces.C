@@ -314,6 +314,10 @@ void Foam::deformationUpdates::compatible::reportWallForces
         {
             nodeShare_[patchi] = Zero;
         }
+        if (wallShare_.set(patchi))
+        {
+            wallShare_[patchi] = Zero;
+        }
 
         // Side nodes: a held point whose reaction pulls is let go
         if (nodes)
@@ -337,6 +341,14 @@ void Foam::deformationUpdates::compatible::reportWallForces
                 if (nodes)
                 {
                     nodeShare_[patchi][j] = share;
+                }
+                if (wallShare_.set(patchi))
+                {
+                    wallShare_[patchi][j] = share;
+                }
+                if (frictionMarks_.set(patchi))
+                {
+                    frictionMarks_[patchi][j] = pointMarks_[pointi];
                 }
 
                 // At the point where it acts (the stage's positions)
