@@ -410,37 +410,30 @@ def body():
         b1 = bodies(case, folders[max(folders)], N * N)
         return b0, b1, [b1[k]["p"] - b0[k]["p"] for k in (0, 1)]
 
-    # Side nodes: the same closed form, to within their frictionless
-    # run's own ratio
-    _, _, jNodesF = impulses(nFric)
-    _, _, jNodesN = impulses(nNone)
-    nodesTilt = abs(jNodesN[0][1] / jNodesN[0][0])
-    for k, label in enumerate("AB"):
-        ratio = abs(jNodesF[k][1] / jNodesF[k][0])
-        lines.append("nodes, block %s: impulse normal %.4e, tangential "
-                     "%.4e, ratio %.4f (frictionless %.4f)"
-                     % (label, jNodesF[k][0], jNodesF[k][1], ratio,
-                        nodesTilt))
-        if abs(ratio - MU) > nodesTilt or nodesTilt > 0.2 * MU:
-            failures.append("nodes, block %s: tangential/normal impulse "
-                            "%.4f, sliding Coulomb %g, frictionless %.4f"
-                            % (label, ratio, MU, nodesTilt))
+    def coulomb_impulses(j, jFree, prefix):
+        """Each block's tangential/normal impulse against mu, to within
+        the frictionless run's own ratio (the tilt of the contact normals
+        at the deforming corners); that ratio."""
+        tilt = abs(jFree[0][1] / jFree[0][0])
+        for k, label in enumerate("AB"):
+            ratio = abs(j[k][1] / j[k][0])
+            lines.append("%sblock %s: impulse normal %.4e, tangential %.4e,"
+                         " ratio %.4f (frictionless %.4f)"
+                         % (prefix, label, j[k][0], j[k][1], ratio, tilt))
+            if abs(ratio - MU) > tilt:
+                failures.append("%sblock %s: tangential/normal impulse "
+                                "%.4f, sliding Coulomb %g, frictionless %.4f"
+                                % (prefix, label, ratio, MU, tilt))
+        if tilt > 0.2 * MU:
+            failures.append("%sfrictionless: tangential/normal impulse %.4f"
+                            % (prefix, tilt))
+        return tilt
 
     b0, bF, jF = impulses(fric)
     _, bN, jN = impulses(none)
-    tilt = abs(jN[0][1] / jN[0][0])
-    for k, label in enumerate("AB"):
-        ratio = abs(jF[k][1] / jF[k][0])
-        lines.append("block %s: impulse normal %.4e, tangential %.4e, ratio "
-                     "%.4f (frictionless %.4f)"
-                     % (label, jF[k][0], jF[k][1], ratio, tilt))
-        if abs(ratio - MU) > tilt:
-            failures.append("block %s: tangential/normal impulse %.4f, "
-                            "sliding Coulomb %g, frictionless %.4f"
-                            % (label, ratio, MU, tilt))
-    if tilt > 0.2 * MU:
-        failures.append("frictionless: tangential/normal impulse %.4f"
-                        % tilt)
+    coulomb_impulses(jF, jN, "")
+    # Side nodes: the same closed form
+    coulomb_impulses(impulses(nFric)[2], impulses(nNone)[2], "nodes, ")
     # Spin: the angular impulse about each centroid of the friction at the
     # contact face (L/2 from the centre along x) and of the normal force at
     # the middle of the overlap (L/4 from it along y), closed forms

@@ -164,6 +164,7 @@ def analyse(case):
         out["pairFrictionPower"] = float(np.max(c["maxPairFrictionPower"]))
     if "maxPairFrictionRatio" in c:
         out["pairFrictionRatio"] = float(np.max(c["maxPairFrictionRatio"]))
+    out["sideNodes"] = side_nodes(case)
     out["mu"] = friction_coefficient(case)
     # The smallest face of the plate's top (the penetration's scale)
     mesh = PolyMesh(case)
@@ -202,6 +203,17 @@ def friction_coefficient(case):
         text = f.read()
     m = re.search(r"muKinetic\s+([-+0-9.eE]+)\s*;", text)
     return float(m.group(1)) if m else 0.0
+
+
+def side_nodes(case):
+    """Whether a bodyContact patch of the case's 0/U has side nodes (its
+    points held on the partner: contact.dat's pair columns are then the
+    held points')."""
+    path = os.path.join(case, "0", "U")
+    if not os.path.exists(path):
+        path = os.path.join(case, "0.orig", "U")
+    with open(path) as f:
+        return re.search(r"\bside\s+nodes\s*;", f.read()) is not None
 
 
 def elastic_copy(root, name, materials, nu, end_time, nodes=None):
