@@ -54,7 +54,8 @@ Asserted:
     their normal forces: compatible::addWallFriction): the same
     deceleration, distance and rest, the per-step friction force and
     energy checks, the wall's work never rising in a step, mu = 0 equal to
-    the frictionless wall byte for byte, and a restart at T0 bit for bit.
+    the frictionless wall byte for byte, a restart at T0 bit for bit, and
+    the oblique impact's checks.
 Work folders: test/runs/slidingBlock/.
 """
 
@@ -222,9 +223,10 @@ def slide_compatible(root, failures):
     return ("compatible N %d: %s; %s; the wall's work -%.4f K0, never rising"
             " (largest step %+.1e K0); mu = 0: %d written times and the"
             " monitor %s the frictionless wall's; restart at %g s: lm, F at"
-            " %g s %.1e off"
+            " %g s %.1e off; %s"
             % (N, closed, steps, -work[-1] / K0, rise, n,
-               "differ from" if differ else "equal to", T0, T1, d_cut))
+               "differ from" if differ else "equal to", T0, T1, d_cut,
+               oblique(root, failures, "compatible")))
 
 
 def slide_checks(root, failures):
@@ -376,8 +378,8 @@ def restart(root, failures):
             " %.1e" % (T0, T1, d_cut, d_control))
 
 
-def oblique_run(root, name, friction):
-    case = make_case(root, name, 0.006, friction=friction)
+def oblique_run(root, name, friction, update="plain"):
+    case = make_case(root, name, 0.006, friction=friction, update=update)
     os.remove(os.path.join(case, "constant", "g"))
     run.run(["transformPoints", "-translate", "(0 0.001 0)"], case)
     run.foam_set(case, "0/U", "internalField", "uniform (0.5 -0.5 0)")
@@ -394,9 +396,12 @@ def oblique_run(root, name, friction):
     return p, spin, M
 
 
-def oblique(root, failures):
-    p_f, spin_f, M = oblique_run(root, "obliqueFriction", (MU_S, MU_K))
-    p_0, spin_0, _ = oblique_run(root, "obliqueFrictionless", None)
+def oblique(root, failures, update="plain"):
+    tag = "" if update == "plain" else update[0].upper() + update[1:]
+    p_f, spin_f, M = oblique_run(root, "obliqueFriction" + tag,
+                                 (MU_S, MU_K), update)
+    p_0, spin_0, _ = oblique_run(root, "obliqueFrictionless" + tag, None,
+                                 update)
     p0 = np.linalg.norm(p_0[0])
     drift_0 = float(np.max(np.abs(p_0[:, 0] - p_0[0, 0]))) / p0
     lost = (p_f[0, 0] - p_f[-1, 0]) / p_f[0, 0]
@@ -404,25 +409,26 @@ def oblique(root, failures):
     bound = MU_K * normal_impulse / p_f[0, 0]
     spin_scale = 0.5 * M * 0.05
     rebound = p_f[-1, 1] > 0 and p_0[-1, 1] > 0
+    label = "oblique" + ("" if update == "plain" else " (%s)" % update)
     if drift_0 > 1e-12:
-        failures.append("oblique frictionless: p_x changed by %.1e |p0|"
-                        % drift_0)
+        failures.append("%s frictionless: p_x changed by %.1e |p0|"
+                        % (label, drift_0))
     if not (lost >= 0.1 and lost <= bound * (1 + 1e-6)):
-        failures.append("oblique: p_x fell by %.3f of p_x(0) (expected"
+        failures.append("%s: p_x fell by %.3f of p_x(0) (expected"
                         " between 0.1 and mu J_n/p_x(0) = %.3f)"
-                        % (lost, bound))
+                        % (label, lost, bound))
     if not (spin_f[-1] < 0
             and abs(spin_f[-1]) > 100 * np.max(np.abs(spin_0))):
-        failures.append("oblique: spin with friction %.2e, frictionless"
-                        " max %.2e (kg m^2/s)" % (spin_f[-1],
+        failures.append("%s: spin with friction %.2e, frictionless"
+                        " max %.2e (kg m^2/s)" % (label, spin_f[-1],
                                                   np.max(np.abs(spin_0))))
     if not rebound:
-        failures.append("oblique: the block did not rebound")
-    return ("oblique impact: frictionless p_x drift %.1e |p0|, spin max"
+        failures.append("%s: the block did not rebound" % label)
+    return ("%s impact: frictionless p_x drift %.1e |p0|, spin max"
             " %.1e of M v |H|; with friction p_x falls by %.3f of p_x(0)"
             " (<= mu J_n/p_x(0) = %.3f), spin %.3e of M v |H|"
-            % (drift_0, np.max(np.abs(spin_0)) / spin_scale, lost, bound,
-               spin_f[-1] / spin_scale))
+            % (label, drift_0, np.max(np.abs(spin_0)) / spin_scale, lost,
+               bound, spin_f[-1] / spin_scale))
 
 
 def body():
