@@ -64,6 +64,9 @@ Asserted:
     block A against its sliding (its spin below the frictionless run's);
     the relative tangential velocity at the end is below the frictionless
     run's by at least half of 2 mu J_n/M;
+  - nodes sticking (mu 0.8, side nodes): the invariants, every point's
+    |F_t|/N at most mu, and the impulse ratio between 0.9 c_s/c_p (the
+    acoustic sticking traction's ratio) and mu;
   - nodes: the invariants above (angular momentum to 1e-10 included),
     mu = 0 byte-equal to frictionless, the held points' friction force
     within the cone of their normal reactions and its power <= 0 at
@@ -93,7 +96,12 @@ L = 0.1
 V = 1.0
 W = 1.0
 MU = 0.3
+#: a coefficient at which the faces stick (above c_s/c_p)
+MU_STICK = 0.8
 RHO = 1400.0
+#: the blocks' wave speeds (E 1.04e9, nu 0.3)
+C_P = 1000.0
+C_S = 535.0
 END = 6e-4
 
 HEADER = """FoamFile
@@ -319,10 +327,14 @@ def body():
     nFric = make_case(os.path.join(root, "nodesFriction"),
                       friction=(MU, MU), nb=N + 2, update="compatible",
                       nodes=True)
-    for case in (nNone, nZero, nFric):
+    nStick = make_case(os.path.join(root, "nodesSticking"),
+                       friction=(MU_STICK, MU_STICK), nb=N + 2,
+                       update="compatible", nodes=True)
+    for case in (nNone, nZero, nFric, nStick):
         run.run(["touchFoam"], case, timeout=testing.RUN_TIMEOUT)
     for case, label in ((nNone, "nodes frictionless"), (nZero, "nodes mu 0"),
-                        (nFric, "nodes friction")):
+                        (nFric, "nodes friction"),
+                        (nStick, "nodes sticking")):
         invariants(case, label, failures, lines)
 
     # mu = 0: byte-equal to frictionless
@@ -434,6 +446,25 @@ def body():
     coulomb_impulses(jF, jN, "")
     # Side nodes: the same closed form
     coulomb_impulses(impulses(nFric)[2], impulses(nNone)[2], "nodes, ")
+
+    # Sticking (side nodes, mu above Z_s/Z_p): the faces' acoustic
+    # sticking traction has |t_t|/|t_n| = Z_s w_rel/(Z_p v_rel) = c_s/c_p
+    # here; the impulse ratio at least 0.9 of that and at most mu (a
+    # sticking point held by a force alone reached only 0.37), every
+    # point within its cone
+    jS = impulses(nStick)[2]
+    stickRatio = abs(jS[0][1] / jS[0][0])
+    acoustic = C_S / C_P
+    lines.append("nodes sticking (mu %g): impulse ratio %.4f (acoustic "
+                 "sticking %.3f)" % (MU_STICK, stickRatio, acoustic))
+    if not 0.9 * acoustic <= stickRatio <= MU_STICK:
+        failures.append("nodes sticking: impulse ratio %.4f outside [0.9 "
+                        "c_s/c_p, mu] = [%.3f, %g]"
+                        % (stickRatio, 0.9 * acoustic, MU_STICK))
+    rows = contact.read_contact(nStick)
+    if np.max(rows["maxPairFrictionRatio"]) > MU_STICK * (1 + 1e-12):
+        failures.append("nodes sticking: a point's |F_t|/N %.15g > mu"
+                        % np.max(rows["maxPairFrictionRatio"]))
     # Spin: the angular impulse about each centroid of the friction at the
     # contact face (L/2 from the centre along x) and of the normal force at
     # the middle of the overlap (L/4 from it along y), closed forms

@@ -177,6 +177,8 @@ Foam::deformationUpdates::compatible::compatible
     frictionArea_(faces.mesh().boundary().size()),
     frictionMarks_(faces.mesh().boundary().size()),
     wallShare_(faces.mesh().boundary().size()),
+    nodeStuck_(faces.mesh().boundary().size()),
+    nodeOwn_(faces.mesh().boundary().size()),
     nodeNormalForce_(0),
     nodeMostTensile_(-GREAT),
     imbalanceWarned_(false),
@@ -223,6 +225,8 @@ Foam::deformationUpdates::compatible::compatible
                 {
                     frictionArea_.set(patchi, new scalarField(nPoints, Zero));
                     frictionMarks_.set(patchi, new labelField(nPoints, 1));
+                    nodeStuck_.set(patchi, new boolList(nPoints, false));
+                    nodeOwn_.set(patchi, new tensorField(nPoints, Zero));
                     nodeFriction_ = true;
                 }
             }
@@ -297,6 +301,23 @@ void Foam::deformationUpdates::compatible::rates
     // conditions, so that a wall can be released on its reaction to them
     completeNodalForces();
     setContactNodalForces();
+
+    // Side nodes with friction decide sticking on the cells' velocities
+    if (nodeFriction_)
+    {
+        pointAv_.setSize(faces_.mesh().nPoints());
+        if (law_.uniformMaterial())
+        {
+            pointInterpolation_.interpolateMomentum
+            (
+                faces_.lm(), 1/law_.rho(), pointAv_
+            );
+        }
+        else
+        {
+            interpolateVelocity(pointAv_);
+        }
+    }
 
     const bool tally = upwindLoss_.valid() && stage == 1;
     if (tally)

@@ -5,27 +5,31 @@ License
     GPL-3.0-or-later, as OpenFOAM.
 
 Description
-    Coulomb friction of side nodes (a node-to-surface contact): a held
-    point and the partner surface under it slide along the tangent plane
-    of the normal e it is held along.  The force F at the point is the
-    friction law's return of the sticking force -Z S w to its cone about
-    the normal reaction N (the point's part of the hold's reaction):
-      - w: the held point's velocity relative to the partner surface,
-        both as Pi A v (the cells' velocities at the points under the
-        constraints, before the upwindings and the hold), in the held
-        point's free directions (tangent to e, and to the planes it lies
-        on), where its body takes all of F;
-      - Z S: the two sides' S-wave impedances in series times the point's
-        share of its patch's area, the force that stops w as two shear
-        waves would (the sticking traction of the Riemann problem, Runcie,
-        Lee, Haider, Gil, Bonet, IJNME 123 (2022) 5700, at a point);
-      - the law decides stick or slip from the static limit (a point has
-        no history), and slips at the kinetic one.
-    F goes to the held point and -F to the partner face's points with the
-    hold's weights, both as nodal forces after the upwindings, so that
-    they reach the cells through the transpose alone: momentum is
-    exchanged exactly, and their kinetic power is F . Pi A v on each side,
-    together F . w <= 0 whatever the meshes (F lies along -w).
+    Coulomb friction at the points the compatible update holds (side nodes
+    of a contact between bodies, a rigid wall), about each point's normal
+    force N: its reaction and the faces' damping of the approach spread
+    over their held points.
+    - Side nodes that stick (stickNodes): a point sticks while both the
+      sticking force -Z S w of its relative velocity w (the cells' A v at
+      the point and under it on the partner) and the tangential reaction
+      a hold would take lie within the law's static cone about N.  It is
+      then held in every direction its contact holds, at the partner's
+      velocity under it: its reaction carries the friction to the
+      partner's points with the hold's weights, and the two works cancel
+      as the normal ones do.  A point has no history: the stage decides.
+    - Points that slide (addNodeFriction, addWallFriction): F is the law's
+      return of -Z S w to its cone about N, w the point's velocity
+      relative to the partner surface (or the wall) as Pi A v in its free
+      directions (before the upwindings and the hold, where its body
+      takes all of F), Z S the S-wave impedances in series (a rigid wall:
+      the body's) times the point's share of its patch's area (the
+      Riemann problem's sticking traction at a point: Runcie, Lee, Haider,
+      Gil, Bonet, IJNME 123 (2022) 5700).  F goes to the point, and -F to
+      the partner face's points with the hold's weights, as nodal forces
+      after the upwindings: momentum is exchanged exactly, and their power
+      is F . w <= 0 whatever the meshes (F lies along -w).
+    On a wall, where single points may pull while the wall pushes as a
+    whole, their pull is taken from the pushing points in proportion.
 
 \*---------------------------------------------------------------------------*/
 
@@ -74,7 +78,8 @@ Foam::tmp<Foam::scalarField>
 Foam::deformationUpdates::compatible::heldPointLoads
 (
     const label patchi,
-    const scalarField& faceLoad
+    const scalarField& faceLoad,
+    const bool rankPart
 ) const
 {
     const fvMesh& mesh = faces_.mesh();
@@ -107,11 +112,114 @@ Foam::deformationUpdates::compatible::heldPointLoads
     );
 
     // Each rank that holds a point its part, as of the reaction
-    forAll(load, j)
+    if (rankPart)
     {
-        load[j] /= frictionMarks_[patchi][j];
+        forAll(load, j)
+        {
+            load[j] /= frictionMarks_[patchi][j];
+        }
     }
     return tload;
+}
+
+
+void Foam::deformationUpdates::compatible::stickNodes
+(
+    const label patchi,
+    const tensorField& ownFixed
+)
+{
+    const fvMesh& mesh = faces_.mesh();
+    contactSurfaces& contact = faces_.contact();
+    const polyPatch& pp = mesh.boundaryMesh()[patchi];
+    const labelList& meshPoints = pp.meshPoints();
+    const labelList& fixingFace = fixingFace_[patchi];
+    const vectorField& Sf = mesh.boundary()[patchi].Sf();
+    bodyContactFvPatchVectorField& condition =
+        refCast<bodyContactFvPatchVectorField>
+        (
+            faces_.lm().boundaryFieldRef()[patchi]
+        );
+    const frictionLaw& law = condition.friction();
+    const pointField& X = mesh.points();
+    const vectorField& pointU =
+        mesh.lookupObject<pointVectorField>("pointD").primitiveField();
+
+    // The partners' cells' velocities at their points, and the faces'
+    // damping of the approach at the held points (all ranks' parts)
+    const vectorField slotAv(contact.gatherSlots(pointAv_));
+    scalarField load
+    (
+        heldPointLoads(patchi, -(condition.traction() & Sf), false)
+    );
+
+    boolList& stuck = nodeStuck_[patchi];
+    stuck = false;
+    DynamicList<label> slots;
+    DynamicList<scalar> weights;
+
+    forAll(meshPoints, j)
+    {
+        const label i = fixingFace[j];
+        if (i < 0)
+        {
+            continue;
+        }
+        const label pointi = meshPoints[j];
+        const vector& e = nodeNormal_[patchi][j];
+
+        // The directions the other conditions leave (a symmetric plane's
+        // tangent ones), all of which a sticking point holds
+        const tensor others(constraints_.fixedSum(pointi) - ownFixed[j]);
+        const tensor own
+        (
+            magSqr(others) > 1e-18
+          ? kinematicPointConstraints::freeProjector(others)
+          : tensor::I
+        );
+
+        // The reaction of a hold in every direction, its part in those
+        // directions (the whole point's, all ranks'), and the normal force
+        const vector R(own & pointForce_[pointi]);
+        const scalar N = load[j] + mag(R & e);
+
+        // The relative velocity of the cells' motion at the point and
+        // under it on the partner, and the tangential reaction a hold
+        // would take
+        slots.clear();
+        weights.clear();
+        contact.surfaceWeights
+        (
+            contact.localFace(patchi, i), X[pointi] + pointU[pointi], e,
+            slots, weights
+        );
+        vector partner(Zero);
+        forAll(slots, k)
+        {
+            partner += weights[k]*slotAv[slots[k]];
+        }
+        const tensor tangential(own & (tensor::I - sqr(e)));
+        const vector w(tangential & (pointAv_[pointi] - partner));
+        const vector Rt(tangential & R);
+        const scalar Z = contact.pairShearImpedance
+        (
+            contact.localFace(patchi, i), slots[0]
+        );
+        const vector stick(-Z*frictionArea_[patchi][j]*w);
+
+        // Both within the static cone: the law keeps them whole
+        if
+        (
+            law.tangentialTraction(stick, N, Zero) == stick
+         && law.tangentialTraction(Rt, N, Zero) == Rt
+         && !law.frictionless()
+        )
+        {
+            stuck[j] = true;
+            nodeOwn_[patchi][j] = own;
+            constraints_.holdAll(pointi);
+        }
+    }
 }
 
 
@@ -170,6 +278,16 @@ void Foam::deformationUpdates::compatible::addNodeFriction
         const label j = holdIndex_[h];
         const label pointi = mesh.boundaryMesh()[patchi].meshPoints()[j];
         const vector& e = nodeNormal_[patchi][j];
+
+        // A sticking point's friction is its reaction's tangential part
+        if (nodeStuck_[patchi][j])
+        {
+            const vector& R = nodeShare_[patchi][j];
+            const scalar Nj = mag(R & e) + load[patchi][j];
+            const vector Rt(nodeOwn_[patchi][j] & (R - (R & e)*e));
+            largestRatio = max(largestRatio, mag(Rt)/max(Nj, VSMALL));
+            continue;
+        }
 
         // This rank's part of the normal force (the reaction and the
         // faces' damping) and of the area (the ranks that hold a point

@@ -192,16 +192,16 @@ void Foam::deformationUpdates::compatible::holdNodesOnSurfaces
     // stresses' and the reactions' nodal forces included)
     const vectorField slotV(contact.gatherSlots(pointV));
 
-    // Per patch point, the sum of the partner's normal velocities the
-    // ranks holding it found, and their number
-    PtrList<scalarField> speed(nodeShare_.size());
+    // Per patch point, the sum of the partner's velocities the ranks
+    // holding it found, and their number
+    PtrList<vectorField> velocity(nodeShare_.size());
     PtrList<labelField> count(nodeShare_.size());
     forAll(nodeShare_, patchi)
     {
         if (nodeShare_.set(patchi))
         {
             const label n = nodeShare_[patchi].size();
-            speed.set(patchi, new scalarField(n, Zero));
+            velocity.set(patchi, new vectorField(n, Zero));
             count.set(patchi, new labelField(n, Zero));
         }
     }
@@ -216,7 +216,7 @@ void Foam::deformationUpdates::compatible::holdNodesOnSurfaces
         {
             partner += holdWeights_[k]*slotV[holdSlots_[k]];
         }
-        speed[patchi][j] += nodeNormal_[patchi][j] & partner;
+        velocity[patchi][j] += partner;
         ++count[patchi][j];
     }
 
@@ -238,33 +238,48 @@ void Foam::deformationUpdates::compatible::holdNodesOnSurfaces
             mesh.boundary()[patchi].patch().meshPoints();
         syncTools::syncPointList
         (
-            mesh, meshPoints, speed[patchi], plusEqOp<scalar>(), scalar(0)
+            mesh, meshPoints, velocity[patchi], plusEqOp<vector>(),
+            vector::zero
         );
         syncTools::syncPointList
         (
             mesh, meshPoints, count[patchi], plusEqOp<label>(), label(0)
         );
 
+        // Along e; a point that sticks (with friction) in every direction
+        // its contact holds
         forAll(meshPoints, j)
         {
             if (count[patchi][j] > 0)
             {
                 const label pointi = meshPoints[j];
-                const vector& e = nodeNormal_[patchi][j];
-                const scalar s = speed[patchi][j]/count[patchi][j];
-                constraints_.prescribeAlong(pointi, e, s);
-                pointV[pointi] += (s - (pointV[pointi] & e))*e;
+                const vector X(velocity[patchi][j]/count[patchi][j]);
+                if (nodeStuck_.set(patchi) && nodeStuck_[patchi][j])
+                {
+                    const tensor& own = nodeOwn_[patchi][j];
+                    constraints_.prescribeOwn(pointi, own, X);
+                    pointV[pointi] += own & (X - pointV[pointi]);
+                }
+                else
+                {
+                    const vector& e = nodeNormal_[patchi][j];
+                    const scalar s = e & X;
+                    constraints_.prescribeAlong(pointi, e, s);
+                    pointV[pointi] += (s - (pointV[pointi] & e))*e;
+                }
             }
         }
     }
 
+    // The held points' reactions at their prescribed velocities (the
+    // reaction lies in the directions held)
     forAll(holdPatch_, h)
     {
         const label patchi = holdPatch_[h];
         const label j = holdIndex_[h];
-        power[patches.find(patchi)] +=
-            (nodeShare_[patchi][j] & nodeNormal_[patchi][j])
-           *speed[patchi][j]/count[patchi][j];
+        const label pointi =
+            mesh.boundaryMesh()[patchi].meshPoints()[j];
+        power[patches.find(patchi)] += nodeShare_[patchi][j] & pointV[pointi];
     }
 
     // the friction's at the points' velocities before the upwindings

@@ -319,10 +319,15 @@ void Foam::deformationUpdates::compatible::reportWallForces
             wallShare_[patchi] = Zero;
         }
 
-        // Side nodes: a held point whose reaction pulls is let go
+        // Side nodes: a held point whose reaction pulls is let go, and
+        // with friction one that sticks is held in every direction
         if (nodes)
         {
             releaseTensileNodes(patchi, ownSum);
+            if (nodeStuck_.set(patchi))
+            {
+                stickNodes(patchi, ownSum);
+            }
         }
 
         // The wall's part of the constraint's reaction at those points,
@@ -333,9 +338,17 @@ void Foam::deformationUpdates::compatible::reportWallForces
             if (fixingFace[j] >= 0)
             {
                 const label pointi = meshPoints[j];
+                // A sticking point (side nodes with friction) holds every
+                // direction no other condition fixes
+                const bool stuck =
+                    nodeStuck_.set(patchi) && nodeStuck_[patchi][j];
                 const vector share
                 (
-                    conditionReaction(pointi, ownSum[j])/pointMarks_[pointi]
+                    (
+                        stuck
+                      ? vector(nodeOwn_[patchi][j] & pointForce_[pointi])
+                      : conditionReaction(pointi, ownSum[j])
+                    )/pointMarks_[pointi]
                 );
                 reaction += share;
                 if (nodes)
