@@ -65,8 +65,9 @@ Asserted:
     the relative tangential velocity at the end is below the frictionless
     run's by at least half of 2 mu J_n/M;
   - nodes sticking (mu 0.8, side nodes): the invariants, every point's
-    |F_t|/N at most mu, and the impulse ratio between 0.9 c_s/c_p (the
-    acoustic sticking traction's ratio) and mu;
+    |F_t|/N at most mu, the impulse ratio between 0.9 c_s/c_p (the
+    acoustic sticking traction's ratio) and mu, and a restart at 2e-4 s
+    (in contact) bit for bit;
   - nodes: the invariants above (angular momentum to 1e-10 included),
     mu = 0 byte-equal to frictionless, the held points' friction force
     within the cone of their normal reactions and its power <= 0 at
@@ -86,7 +87,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 
 import numpy as np  # noqa: E402
 
-from touchfoam import contact, monitor, run, testing  # noqa: E402
+from touchfoam import cases, contact, monitor, run, testing  # noqa: E402
 from touchfoam.foamfile import read_field  # noqa: E402
 from touchfoam.mesh import PolyMesh  # noqa: E402
 
@@ -302,6 +303,36 @@ def invariants(case, label, failures, lines):
     return m
 
 
+def sticking_restart(root, failures):
+    """The sticking side nodes (they keep no state) stopped at 2e-4 s in
+    contact and restarted to END: lm and F equal the uninterrupted run's
+    bit for bit (17 digits written); the line."""
+    runs = {}
+    for name, end in (("stickWhole", END), ("stickRestarted", 2e-4)):
+        case = make_case(os.path.join(root, name),
+                         friction=(MU_STICK, MU_STICK), nb=N + 2,
+                         update="compatible", nodes=True)
+        for key, value in cases.precise_output().items():
+            run.foam_set(case, "system/controlDict", key, value)
+        run.foam_set(case, "system/controlDict", "endTime", end)
+        run.run(["touchFoam"], case, timeout=testing.RUN_TIMEOUT)
+        runs[name] = case
+    cut = runs["stickRestarted"]
+    run.foam_set(cut, "system/controlDict", "endTime", END)
+    run.run(["touchFoam"], cut, "touchFoam.restart",
+            timeout=testing.RUN_TIMEOUT)
+    n = PolyMesh(cut).n_cells
+    worst = max(float(np.max(np.abs(
+        testing.read_internal(run.time_dir(cut, END), f, n)
+        - testing.read_internal(run.time_dir(runs["stickWhole"], END), f,
+                                n)))) for f in ("lm", "F"))
+    if worst != 0:
+        failures.append("nodes sticking: the restart at 2e-4 s differs by "
+                        "%.1e at %g s" % (worst, END))
+    return ("nodes sticking restarted at 2e-4 s: lm, F at %g s %.1e off"
+            % (END, worst))
+
+
 def body():
     root = testing.work_dir(NAME)
     failures, lines = [], []
@@ -465,6 +496,7 @@ def body():
     if np.max(rows["maxPairFrictionRatio"]) > MU_STICK * (1 + 1e-12):
         failures.append("nodes sticking: a point's |F_t|/N %.15g > mu"
                         % np.max(rows["maxPairFrictionRatio"]))
+    lines.append(sticking_restart(root, failures))
     # Spin: the angular impulse about each centroid of the friction at the
     # contact face (L/2 from the centre along x) and of the normal force at
     # the middle of the overlap (L/4 from it along y), closed forms
