@@ -25,6 +25,7 @@ from 0 to about 2L/c_p = 2e-4 s).  Runs:
                 held on faceA's surface), B's mesh (N + 2) x (N + 2):
                 frictionless, mu = 0 and friction (the friction acts at
                 the held points: compatible::addNodeFriction);
+  auto          friction, side auto on both faces (compatible);
   compatible    friction with FUpdate compatible and neither face with
                 side nodes: refused.
 
@@ -73,6 +74,8 @@ Asserted:
     within the cone of their normal reactions and its power <= 0 at
     every step (contact.dat's pair columns), the tangential/normal impulse
     mu within the nodes frictionless run's ratio;
+  - auto: faceB, finer, reported as given side nodes and faceA as both,
+    and every written field byte-equal to the nodes friction run;
   - FUpdate compatible with friction and no side nodes is refused naming
     FUpdate, side nodes and plain.
 Work folders: test/runs/bodyFriction/.
@@ -194,9 +197,11 @@ def write(case, rel, cls, obj, body):
         f.write(HEADER % (cls, obj) + body)
 
 
-def make_case(dst, friction=None, nb=N, update="plain", nodes=False):
+def make_case(dst, friction=None, nb=N, update="plain", nodes=False,
+              auto=False):
     """The oblique collision at dst; friction: (muStatic, muKinetic) or
-    None; nb: block B's cells a side; nodes: faceB with side nodes."""
+    None; nb: block B's cells a side; nodes: faceB with side nodes; auto:
+    both faces with side auto."""
     run.copy_case(run.tutorial_dir("barCollision"), dst)
     for name in ("0.orig", "0"):
         shutil.rmtree(os.path.join(dst, name), ignore_errors=True)
@@ -213,6 +218,9 @@ def make_case(dst, friction=None, nb=N, update="plain", nodes=False):
     if nodes:
         field = field.replace("faceB { type bodyContact;",
                               "faceB { type bodyContact; side nodes;")
+    if auto:
+        field = field.replace("type bodyContact;",
+                              "type bodyContact; side auto;")
     write(dst, "0/U", "volVectorField", "U", field)
     write(dst, "system/setExprFieldsDict", "dictionary", "setExprFieldsDict",
           EXPRESSIONS % {"v": V, "w": W, "mv": -V, "mw": -W})
@@ -331,6 +339,35 @@ def sticking_restart(root, failures):
                         "%.1e at %g s" % (worst, END))
     return ("nodes sticking restarted at 2e-4 s: lm, F at %g s %.1e off"
             % (END, worst))
+
+
+def auto_side(root, explicit, failures):
+    """side auto on both faces: block B, of the same material and finer
+    ((N + 2)^2 cells against N^2), gets side nodes and faceA keeps both;
+    the run byte-equal to the one with faceB's side nodes given
+    (explicit)."""
+    case = make_case(os.path.join(root, "autoSide"), friction=(MU, MU),
+                     nb=N + 2, update="compatible", auto=True)
+    log = run.run(["touchFoam"], case, timeout=testing.RUN_TIMEOUT)
+    with open(log) as f:
+        text = f.read()
+    for face, side in (("faceA", "both"), ("faceB", "nodes")):
+        if "bodyContact %s: side auto -> %s" % (face, side) not in text:
+            failures.append("side auto: %s not reported as %s" % (face, side))
+    differ, n = [], 0
+    for t, name in sorted(run.time_dirs(explicit).items()):
+        if t == 0:
+            continue
+        for field in ("lm", "F", "D", "pointD"):
+            n += 1
+            if internal_text(os.path.join(explicit, name, field)) \
+                    != internal_text(os.path.join(case, name, field)):
+                differ.append("%s at %s" % (field, name))
+    if differ or n == 0:
+        failures.append("side auto: differs from faceB's side nodes: %s"
+                        % ", ".join(differ[:5]))
+    return ("side auto on both faces: faceB (finer) nodes, faceA both; %d"
+            " written fields byte-equal to faceB's side nodes given" % n)
 
 
 def body():
@@ -527,6 +564,8 @@ def body():
     if wN - wF < 0.5 * coulomb:
         failures.append("relative tangential velocity %.4f, frictionless "
                         "%.4f: not reduced" % (wF, wN))
+
+    lines.append(auto_side(root, nFric, failures))
 
     # FUpdate compatible with friction and no side nodes is refused
     comp = make_case(os.path.join(root, "compatible"), friction=(MU, MU),

@@ -51,7 +51,8 @@ Asserted:
     for a block sliding along +x on a wall below it), 100 times the
     frictionless one;
   - FUpdate compatible (the friction at the wall's held points, about
-    their normal forces: compatible::addWallFriction): the same
+    their normal forces: compatible::stickWallPoints holds those that
+    stick, compatible::addWallFriction pushes those that slide): the same
     deceleration, distance and rest, the per-step friction force and
     energy checks, the wall's work never rising in a step, mu = 0 equal to
     the frictionless wall byte for byte, a restart at T0 bit for bit, and

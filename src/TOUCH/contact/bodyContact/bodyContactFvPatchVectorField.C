@@ -29,8 +29,10 @@ namespace Foam
         " pair's contact velocity; faces that match) or nodes (this patch's"
         " points follow the partner surface under them and load its points"
         " with their reactions; faces that do not match: the softer side,"
-        " or the finer where the two are alike)",
-        "-", word("both"), entryLimits::oneOf({"both", "nodes"})
+        " or the finer where the two are alike) or auto (the update gives"
+        " this patch side nodes where a patch it may touch is stiffer, or"
+        " alike and coarser)",
+        "-", word("both"), entryLimits::oneOf({"both", "nodes", "auto"})
     );
 
     static const describedEntry bodyContactContactEntry
@@ -121,6 +123,7 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     stageForce_(Zero),
     pointConstrained_(false),
     nodes_(false),
+    autoSide_(false),
     nodePower_(0),
     nodePowerSet_(false)
 {}
@@ -160,6 +163,7 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     stageForce_(Zero),
     pointConstrained_(false),
     nodes_(bodyContactSideEntry.read(dict) == "nodes"),
+    autoSide_(bodyContactSideEntry.read(dict) == "auto"),
     nodePower_(0),
     nodePowerSet_(false)
 {}
@@ -193,6 +197,7 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     stageForce_(Zero),
     pointConstrained_(false),
     nodes_(ptf.nodes_),
+    autoSide_(ptf.autoSide_),
     nodePower_(0),
     nodePowerSet_(false)
 {
@@ -229,6 +234,7 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     stageForce_(ptf.stageForce_),
     pointConstrained_(ptf.pointConstrained_),
     nodes_(ptf.nodes_),
+    autoSide_(ptf.autoSide_),
     nodePower_(0),
     nodePowerSet_(false)
 {}
@@ -255,6 +261,7 @@ Foam::bodyContactFvPatchVectorField::bodyContactFvPatchVectorField
     stageForce_(ptf.stageForce_),
     pointConstrained_(ptf.pointConstrained_),
     nodes_(ptf.nodes_),
+    autoSide_(ptf.autoSide_),
     nodePower_(0),
     nodePowerSet_(false)
 {}
@@ -463,9 +470,12 @@ void Foam::bodyContactFvPatchVectorField::write(Ostream& os) const
     {
         os.writeEntry(bodyContactPatchesEntry.name(), patches_);
     }
-    if (nodes_)
+    if (autoSide_ || nodes_)
     {
-        os.writeEntry(bodyContactSideEntry.name(), word("nodes"));
+        os.writeEntry
+        (
+            bodyContactSideEntry.name(), word(autoSide_ ? "auto" : "nodes")
+        );
     }
 
     scalarField contact(contact_.size());

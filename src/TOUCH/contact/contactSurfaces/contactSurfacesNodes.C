@@ -307,6 +307,111 @@ void Foam::contactSurfaces::reportNodeFriction
 }
 
 
+void Foam::contactSurfaces::resolveAutoSides
+(
+    const mechanicalLaw& law,
+    volVectorField& lm
+)
+{
+    // Each patch's mean P-wave impedance and mean face area, on all ranks
+    const label n = patches_.size();
+    scalarList Z(n, Zero);
+    scalarList area(n, Zero);
+    scalarList faces(n, Zero);
+    bool anyAuto = false;
+    forAll(patches_, s)
+    {
+        const fvPatch& patch = mesh_.boundary()[patches_[s]];
+        for (const label celli : patch.faceCells())
+        {
+            Z[s] += law.rho(celli)*law.Up(celli);
+        }
+        area[s] = sum(patch.magSf());
+        faces[s] = patch.size();
+        anyAuto =
+            anyAuto
+         || refCast<const bodyContactFvPatchVectorField>
+            (
+                lm.boundaryField()[patches_[s]]
+            ).autoSide();
+    }
+    if (!anyAuto)
+    {
+        return;
+    }
+    Pstream::listCombineGather(Z, plusEqOp<scalar>());
+    Pstream::listCombineGather(area, plusEqOp<scalar>());
+    Pstream::listCombineGather(faces, plusEqOp<scalar>());
+    Pstream::listCombineScatter(Z);
+    Pstream::listCombineScatter(area);
+    Pstream::listCombineScatter(faces);
+    forAll(Z, s)
+    {
+        Z[s] /= max(faces[s], scalar(1));
+        area[s] /= max(faces[s], scalar(1));
+    }
+
+    // Whether s, not t, should hold its points: the softer, else the
+    // finer, else the first in the boundary (ratios within 5 % alike)
+    auto holdsAgainst = [&](const label s, const label t)
+    {
+        const scalar rZ = Z[s]/max(Z[t], VSMALL);
+        if (mag(rZ - 1) > 0.05)
+        {
+            return rZ < 1;
+        }
+        const scalar rA = area[s]/max(area[t], VSMALL);
+        if (mag(rA - 1) > 0.05)
+        {
+            return rA < 1;
+        }
+        return s < t;
+    };
+
+    const boolList given(nodes_);
+    forAll(patches_, s)
+    {
+        bodyContactFvPatchVectorField& condition =
+            refCast<bodyContactFvPatchVectorField>
+            (
+                lm.boundaryFieldRef()[patches_[s]]
+            );
+        if (!condition.autoSide())
+        {
+            continue;
+        }
+        label against = -1;
+        forAll(patches_, t)
+        {
+            if
+            (
+                t != s && (allowed_[s][t] || allowed_[t][s]) && !given[t]
+             && holdsAgainst(s, t)
+            )
+            {
+                against = t;
+                break;
+            }
+        }
+        if (against >= 0)
+        {
+            nodes_[s] = true;
+            condition.setNodes();
+        }
+        Info<< "bodyContact " << mesh_.boundary()[patches_[s]].name()
+            << ": side auto -> " << (against >= 0 ? "nodes" : "both");
+        if (against >= 0)
+        {
+            Info<< " (against " << mesh_.boundary()[patches_[against]].name()
+                << ": rho c_p " << Z[s] << " and " << Z[against]
+                << ", mean face area " << area[s] << " and " << area[against]
+                << ")";
+        }
+        Info<< endl;
+    }
+}
+
+
 void Foam::contactSurfaces::checkNodesFriction
 (
     const volVectorField& lm,

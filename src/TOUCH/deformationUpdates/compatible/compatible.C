@@ -186,6 +186,11 @@ Foam::deformationUpdates::compatible::compatible
     releasing_(releasesOnForce(faces.lm())),
     releaseFaceForce_(faces.mesh().boundary().size())
 {
+    if (hasContact_)
+    {
+        faces.contact().resolveAutoSides(law, faces.lm());
+    }
+
     forAll(faces.mesh().boundary(), patchi)
     {
         const label n = pC_[patchi].size();
@@ -245,6 +250,8 @@ Foam::deformationUpdates::compatible::compatible
                 frictionArea_.set(patchi, new scalarField(nPoints, Zero));
                 frictionMarks_.set(patchi, new labelField(nPoints, 1));
                 wallShare_.set(patchi, new vectorField(nPoints, Zero));
+                nodeStuck_.set(patchi, new boolList(nPoints, false));
+                nodeOwn_.set(patchi, new tensorField(nPoints, Zero));
                 wallFriction_ = true;
             }
         }
@@ -302,8 +309,8 @@ void Foam::deformationUpdates::compatible::rates
     completeNodalForces();
     setContactNodalForces();
 
-    // Side nodes with friction decide sticking on the cells' velocities
-    if (nodeFriction_)
+    // Points with friction decide sticking on the cells' velocities
+    if (nodeFriction_ || wallFriction_)
     {
         pointAv_.setSize(faces_.mesh().nPoints());
         if (law_.uniformMaterial())

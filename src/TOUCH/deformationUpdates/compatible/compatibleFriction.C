@@ -9,13 +9,14 @@ Description
     of a contact between bodies, a rigid wall), about each point's normal
     force N: its reaction and the faces' damping of the approach spread
     over their held points.
-    - Side nodes that stick (stickNodes): a point sticks while both the
-      sticking force -Z S w of its relative velocity w (the cells' A v at
-      the point and under it on the partner) and the tangential reaction
-      a hold would take lie within the law's static cone about N.  It is
-      then held in every direction its contact holds, at the partner's
-      velocity under it: its reaction carries the friction to the
-      partner's points with the hold's weights, and the two works cancel
+    - Points that stick (stickNodes, stickWallPoints): a point sticks
+      while both the sticking force -Z S w of its relative velocity w (the
+      cells' A v at the point and under it on the partner, or the wall's
+      velocity) and the tangential reaction a hold would take lie within
+      the law's static cone about N.  It is then held in every direction
+      its contact holds, at the partner's velocity under it (the wall's):
+      its reaction is the friction, carried to the partner's points with
+      the hold's weights (to the wall's force), and the two works cancel
       as the normal ones do.  A point has no history: the stage decides.
     - Points that slide (addNodeFriction, addWallFriction): F is the law's
       return of -Z S w to its cone about N, w the point's velocity
@@ -120,106 +121,6 @@ Foam::deformationUpdates::compatible::heldPointLoads
         }
     }
     return tload;
-}
-
-
-void Foam::deformationUpdates::compatible::stickNodes
-(
-    const label patchi,
-    const tensorField& ownFixed
-)
-{
-    const fvMesh& mesh = faces_.mesh();
-    contactSurfaces& contact = faces_.contact();
-    const polyPatch& pp = mesh.boundaryMesh()[patchi];
-    const labelList& meshPoints = pp.meshPoints();
-    const labelList& fixingFace = fixingFace_[patchi];
-    const vectorField& Sf = mesh.boundary()[patchi].Sf();
-    bodyContactFvPatchVectorField& condition =
-        refCast<bodyContactFvPatchVectorField>
-        (
-            faces_.lm().boundaryFieldRef()[patchi]
-        );
-    const frictionLaw& law = condition.friction();
-    const pointField& X = mesh.points();
-    const vectorField& pointU =
-        mesh.lookupObject<pointVectorField>("pointD").primitiveField();
-
-    // The partners' cells' velocities at their points, and the faces'
-    // damping of the approach at the held points (all ranks' parts)
-    const vectorField slotAv(contact.gatherSlots(pointAv_));
-    scalarField load
-    (
-        heldPointLoads(patchi, -(condition.traction() & Sf), false)
-    );
-
-    boolList& stuck = nodeStuck_[patchi];
-    stuck = false;
-    DynamicList<label> slots;
-    DynamicList<scalar> weights;
-
-    forAll(meshPoints, j)
-    {
-        const label i = fixingFace[j];
-        if (i < 0)
-        {
-            continue;
-        }
-        const label pointi = meshPoints[j];
-        const vector& e = nodeNormal_[patchi][j];
-
-        // The directions the other conditions leave (a symmetric plane's
-        // tangent ones), all of which a sticking point holds
-        const tensor others(constraints_.fixedSum(pointi) - ownFixed[j]);
-        const tensor own
-        (
-            magSqr(others) > 1e-18
-          ? kinematicPointConstraints::freeProjector(others)
-          : tensor::I
-        );
-
-        // The reaction of a hold in every direction, its part in those
-        // directions (the whole point's, all ranks'), and the normal force
-        const vector R(own & pointForce_[pointi]);
-        const scalar N = load[j] + mag(R & e);
-
-        // The relative velocity of the cells' motion at the point and
-        // under it on the partner, and the tangential reaction a hold
-        // would take
-        slots.clear();
-        weights.clear();
-        contact.surfaceWeights
-        (
-            contact.localFace(patchi, i), X[pointi] + pointU[pointi], e,
-            slots, weights
-        );
-        vector partner(Zero);
-        forAll(slots, k)
-        {
-            partner += weights[k]*slotAv[slots[k]];
-        }
-        const tensor tangential(own & (tensor::I - sqr(e)));
-        const vector w(tangential & (pointAv_[pointi] - partner));
-        const vector Rt(tangential & R);
-        const scalar Z = contact.pairShearImpedance
-        (
-            contact.localFace(patchi, i), slots[0]
-        );
-        const vector stick(-Z*frictionArea_[patchi][j]*w);
-
-        // Both within the static cone: the law keeps them whole
-        if
-        (
-            law.tangentialTraction(stick, N, Zero) == stick
-         && law.tangentialTraction(Rt, N, Zero) == Rt
-         && !law.frictionless()
-        )
-        {
-            stuck[j] = true;
-            nodeOwn_[patchi][j] = own;
-            constraints_.holdAll(pointi);
-        }
-    }
 }
 
 
@@ -447,6 +348,16 @@ void Foam::deformationUpdates::compatible::addWallFriction
             {
                 continue;
             }
+
+            // A sticking point's friction is its reaction's tangential
+            // part, which moves with the wall
+            if (nodeStuck_[patchi][j])
+            {
+                const vector n(Sf[i]/magSf[i]);
+                power[i] += (share[j] - (share[j] & n)*n) & V;
+                continue;
+            }
+
             const scalar N = scale*normal[j];
             const scalar S =
                 frictionArea_[patchi][j]/frictionMarks_[patchi][j];
