@@ -29,16 +29,13 @@ void Foam::deformationUpdates::compatible::setContactNodalForces()
 
     const fvMesh& mesh = faces_.mesh();
 
-    forAll(mesh.boundary(), patchi)
+    for (const label patchi : faces_.contact().patches())
     {
-        fvPatchVectorField& pf = faces_.lm().boundaryFieldRef()[patchi];
-        if (!isA<bodyContactFvPatchVectorField>(pf))
-        {
-            continue;
-        }
-
         bodyContactFvPatchVectorField& condition =
-            refCast<bodyContactFvPatchVectorField>(pf);
+            refCast<bodyContactFvPatchVectorField>
+            (
+                faces_.lm().boundaryFieldRef()[patchi]
+            );
         const primitivePatch& pp = condition.patch().patch();
         const labelList& meshPoints = pp.meshPoints();
         const faceList& localFaces = pp.localFaces();
@@ -129,22 +126,18 @@ void Foam::deformationUpdates::compatible::balanceContactForces
         return;
     }
 
-    const fvMesh& mesh = faces_.mesh();
     vector imbalance(Zero);
     scalar weightSum = 0;
     scalar forceScale = 0;
     DynamicList<word> patches;
 
-    forAll(mesh.boundary(), patchi)
+    for (const label patchi : faces_.contact().patches())
     {
-        const fvPatchVectorField& pf = faces_.lm().boundaryField()[patchi];
-        if (!isA<bodyContactFvPatchVectorField>(pf))
-        {
-            continue;
-        }
-
         const bodyContactFvPatchVectorField& condition =
-            refCast<const bodyContactFvPatchVectorField>(pf);
+            refCast<const bodyContactFvPatchVectorField>
+            (
+                faces_.lm().boundaryField()[patchi]
+            );
         const scalarField& magSf = condition.patch().magSf();
         const labelUList& faceCells = condition.patch().faceCells();
 
@@ -177,16 +170,13 @@ void Foam::deformationUpdates::compatible::balanceContactForces
         return;
     }
 
-    forAll(mesh.boundary(), patchi)
+    for (const label patchi : faces_.contact().patches())
     {
-        fvPatchVectorField& pf = faces_.lm().boundaryFieldRef()[patchi];
-        if (!isA<bodyContactFvPatchVectorField>(pf))
-        {
-            continue;
-        }
-
         bodyContactFvPatchVectorField& condition =
-            refCast<bodyContactFvPatchVectorField>(pf);
+            refCast<bodyContactFvPatchVectorField>
+            (
+                faces_.lm().boundaryFieldRef()[patchi]
+            );
         const scalarField& magSf = condition.patch().magSf();
         const labelUList& faceCells = condition.patch().faceCells();
         vector taken(Zero);

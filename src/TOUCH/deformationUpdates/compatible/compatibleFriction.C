@@ -272,6 +272,52 @@ void Foam::deformationUpdates::compatible::addNodeFriction
 }
 
 
+Foam::scalar Foam::deformationUpdates::compatible::wallNormalParts
+(
+    const label patchi,
+    const vectorField& reaction,
+    scalarField& normal
+) const
+{
+    const fvPatch& patch = faces_.mesh().boundary()[patchi];
+    const vectorField& Sf = patch.Sf();
+    const scalarField& magSf = patch.magSf();
+    const labelList& fixingFace = fixingFace_[patchi];
+
+    // The faces' forces on the momentum rate (their damping of the
+    // approach), their normal parts at the held points
+    const scalarField load
+    (
+        heldPointLoads(patchi, -(releaseFaceForce_[patchi] & Sf)/magSf)
+    );
+
+    // Each held point's part of the normal force (this rank's, against
+    // the face's outward normal: the reaction and the faces' damping).
+    // The wall pushes as a whole, so a point may pull: its pull is taken
+    // from the pushing points' forces in proportion, so that the friction
+    // of the wall is at most mu times its normal force (with the pushing
+    // points alone, a sliding block's |dp_x/dt| passed muStatic times its
+    // normal force by 5e-3 M g in steps where it bounced)
+    normal.setSize(fixingFace.size());
+    normal = 0;
+    scalar net = 0;
+    scalar pushing = 0;
+    forAll(fixingFace, j)
+    {
+        const label i = fixingFace[j];
+        if (i >= 0)
+        {
+            normal[j] = load[j] - (reaction[j] & Sf[i])/magSf[i];
+            net += normal[j];
+            pushing += max(normal[j], scalar(0));
+        }
+    }
+    reduce(net, sumOp<scalar>());
+    reduce(pushing, sumOp<scalar>());
+    return pushing > 0 ? min(max(net, scalar(0))/pushing, scalar(1)) : 0;
+}
+
+
 void Foam::deformationUpdates::compatible::addWallFriction
 (
     vector& torque
@@ -304,42 +350,8 @@ void Foam::deformationUpdates::compatible::addWallFriction
         power = 0;
         vector force(Zero);
 
-        // The faces' forces on the momentum rate (their damping of the
-        // approach), their normal parts at the held points
-        const scalarField load
-        (
-            heldPointLoads
-            (
-                patchi,
-                -(releaseFaceForce_[patchi] & Sf)/magSf
-            )
-        );
-
-        // Each held point's part of the normal force (this rank's, pushing
-        // the body off the wall, against the face's outward normal: the
-        // reaction and the faces' damping).  The wall pushes as a whole,
-        // so a point may pull: its pull is taken from the pushing points'
-        // forces in proportion, so that the friction of the wall is at
-        // most mu times its normal force (with the pushing points alone,
-        // a sliding block's |dp_x/dt| passed muStatic times its normal
-        // force by 5e-3 M g in steps where it bounced)
-        scalarField normal(meshPoints.size(), Zero);
-        scalar net = 0;
-        scalar pushing = 0;
-        forAll(meshPoints, j)
-        {
-            const label i = fixingFace[j];
-            if (i >= 0)
-            {
-                normal[j] = load[j] - (share[j] & Sf[i])/magSf[i];
-                net += normal[j];
-                pushing += max(normal[j], scalar(0));
-            }
-        }
-        reduce(net, sumOp<scalar>());
-        reduce(pushing, sumOp<scalar>());
-        const scalar scale =
-            pushing > 0 ? min(max(net, scalar(0))/pushing, scalar(1)) : 0;
+        scalarField normal;
+        const scalar scale = wallNormalParts(patchi, share, normal);
 
         forAll(meshPoints, j)
         {

@@ -128,37 +128,23 @@ void Foam::deformationUpdates::compatible::stickWallPoints
     const labelUList& faceCells = patch.faceCells();
     const vector V(wall.velocity(faces_.stageTime()));
 
-    // Each held point's normal force pushing the body off the wall (all
-    // ranks' parts: the faces' damping and the reaction), and the scale
-    // addWallFriction takes the pulling points' pull from the pushing ones
-    // with, so that a point sticks under the same cone it slides in
-    const scalarField load
-    (
-        heldPointLoads
-        (
-            patchi, -(releaseFaceForce_[patchi] & Sf)/magSf, false
-        )
-    );
-    scalarField normal(meshPoints.size(), Zero);
-    scalar net = 0;
-    scalar pushing = 0;
+    // Each held point's normal force pushing the body off the wall, as
+    // addWallFriction takes it (the pulling points' pull taken from the
+    // pushing ones), so that a point sticks under the cone it slides in;
+    // the ranks' parts, whole below
+    scalarField normal;
+    vectorField reaction(meshPoints.size(), Zero);
     forAll(meshPoints, j)
     {
-        const label i = fixingFace[j];
-        if (i >= 0)
+        if (fixingFace[j] >= 0)
         {
             const label pointi = meshPoints[j];
-            normal[j] =
-                load[j]
-              - (conditionReaction(pointi, ownFixed[j]) & Sf[i])/magSf[i];
-            net += normal[j]/pointMarks_[pointi];
-            pushing += max(normal[j], scalar(0))/pointMarks_[pointi];
+            frictionMarks_[patchi][j] = pointMarks_[pointi];
+            reaction[j] =
+                conditionReaction(pointi, ownFixed[j])/pointMarks_[pointi];
         }
     }
-    reduce(net, sumOp<scalar>());
-    reduce(pushing, sumOp<scalar>());
-    const scalar scale =
-        pushing > 0 ? min(max(net, scalar(0))/pushing, scalar(1)) : 0;
+    const scalar scale = wallNormalParts(patchi, reaction, normal);
 
     labelList sticks(meshPoints.size(), 0);
     forAll(meshPoints, j)
@@ -169,7 +155,7 @@ void Foam::deformationUpdates::compatible::stickWallPoints
             continue;
         }
         const label pointi = meshPoints[j];
-        const scalar N = scale*normal[j];
+        const scalar N = scale*normal[j]*pointMarks_[pointi];
         const vector n(Sf[i]/magSf[i]);
         const tensor own(ownDirections(pointi, ownFixed[j]));
 
