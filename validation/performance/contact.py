@@ -19,6 +19,10 @@ Cases (about 100,000 cells each; README.md, "Contact and gravity"):
              contact   the two ends bodyContact
              free      the same ends traction-free (the blocks pass
                        through each other: no contact code at all)
+             nodes     contact with bar1End's side nodes
+             friction  contact with Coulomb friction (mu 0.3) and side
+                       auto on both ends (bar1End, the first, takes
+                       nodes): the friction and sticking at the points
   partial  a block 34 x 48 x 48 hit at +-0.1 m/s by one 34 x 24 x 24 on
            the middle of its end (97,920 cells, free sides): a quarter of
            the larger end (576 of its 2,304 faces) in contact
@@ -67,12 +71,20 @@ RUNS = os.path.join(HERE, "runs", "contact")
 CONTROL = {"endTime": 1000, "writeControl": "timeStep",
            "writeInterval": performance.NEVER}
 
-#: Per case: reference variant, {variant: {patch: type}} (two-block
-#: cases) or {variant: constant/g value or None} (gravity)
+#: The friction of the full case's friction variant
+FRICTION = "friction { type coulomb; muStatic 0.3; muKinetic 0.3; }"
+
+#: Per case: reference variant, {variant: {patch: type or (type, further
+#: entries)}} (two-block cases) or {variant: constant/g value or None}
+#: (gravity)
 CASES = {
     "full": ("free", {
         "contact": {"bar1End": "bodyContact", "bar2End": "bodyContact"},
-        "free": {"bar1End": "traction", "bar2End": "traction"}}),
+        "free": {"bar1End": "traction", "bar2End": "traction"},
+        "nodes": {"bar1End": ("bodyContact", "side nodes;"),
+                  "bar2End": "bodyContact"},
+        "friction": {"bar1End": ("bodyContact", "side auto; " + FRICTION),
+                     "bar2End": ("bodyContact", "side auto; " + FRICTION)}}),
     "partial": ("free", {
         "contact": {"bar1End": "bodyContact", "bar2End": "bodyContact"},
         "free": {"bar1End": "traction", "bar2End": "traction"},
@@ -146,9 +158,10 @@ boundaryField
                "ends": "traction", "sides": sides}
     patches.update(types)
     for name, kind in patches.items():
+        kind, extra = kind if isinstance(kind, tuple) else (kind, "")
         text += ("    %s\n    {\n        type            %s;\n"
-                 "        value           uniform (0 0 0);\n    }\n"
-                 % (name, kind))
+                 "        %s\n        value           uniform (0 0 0);\n"
+                 "    }\n" % (name, kind, extra))
     return text + "}\n"
 
 
@@ -266,7 +279,7 @@ def contact_faces(case):
     utext = open(u).read()
     n = 0
     for name, size in sizes.items():
-        m = re.search(r"\b%s\s*\{[^}]*type\s+(\w+)" % name,
+        m = re.search(r"\b%s\s*\{[^}]*?type\s+(\w+)" % name,
                                     utext)
         if m and m.group(1) == "bodyContact":
             n += size

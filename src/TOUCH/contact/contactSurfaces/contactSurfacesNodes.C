@@ -444,8 +444,8 @@ void Foam::contactSurfaces::checkNodesFriction
                     << " the contact holds, which friction needs at points"
                     << " held on one side" << nl
                     << "Valid: 'side nodes;' on one of the two patches (the"
-                    << " softer, or the finer where they are alike), or"
-                    << " FUpdate plain" << nl
+                    << " softer, or the finer where they are alike), 'side"
+                    << " auto;' on both, or FUpdate plain" << nl
                     << exit(FatalIOError);
             }
         }

@@ -309,21 +309,23 @@ void Foam::deformationUpdates::compatible::rates
     completeNodalForces();
     setContactNodalForces();
 
-    // Points with friction decide sticking on the cells' velocities
+    // The cells' velocities at the points, A v (the conditions below
+    // change rates, not the cells' momenta); with friction they decide
+    // which points stick, before the constraints are applied
+    if (law_.uniformMaterial())
+    {
+        pointInterpolation_.interpolateMomentum
+        (
+            faces_.lm(), 1/law_.rho(), pointV
+        );
+    }
+    else
+    {
+        interpolateVelocity(pointV);
+    }
     if (nodeFriction_ || wallFriction_)
     {
-        pointAv_.setSize(faces_.mesh().nPoints());
-        if (law_.uniformMaterial())
-        {
-            pointInterpolation_.interpolateMomentum
-            (
-                faces_.lm(), 1/law_.rho(), pointAv_
-            );
-        }
-        else
-        {
-            interpolateVelocity(pointAv_);
-        }
+        pointAv_ = pointV;
     }
 
     const bool tally = upwindLoss_.valid() && stage == 1;
@@ -345,17 +347,6 @@ void Foam::deformationUpdates::compatible::rates
 
     // Point velocities v_a = Pi_a (A v)_a + b_a, and the upwinding of the
     // nodal forces
-    if (law_.uniformMaterial())
-    {
-        pointInterpolation_.interpolateMomentum
-        (
-            faces_.lm(), 1/law_.rho(), pointV
-        );
-    }
-    else
-    {
-        interpolateVelocity(pointV);
-    }
     constraints_.constrain(pointV);
     if (nodeFriction_ || wallFriction_)
     {
