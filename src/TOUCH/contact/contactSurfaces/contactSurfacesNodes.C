@@ -402,10 +402,12 @@ void Foam::contactSurfaces::resolveAutoSides
             << ": side auto -> " << (against >= 0 ? "nodes" : "both");
         if (against >= 0)
         {
+            const int precision = Info().precision(4);
             Info<< " (against " << mesh_.boundary()[patches_[against]].name()
                 << ": rho c_p " << Z[s] << " and " << Z[against]
                 << ", mean face area " << area[s] << " and " << area[against]
                 << ")";
+            Info().precision(precision);
         }
         Info<< endl;
     }
