@@ -27,7 +27,14 @@ digits so that equal numbers are equal doubles:
                 every 0.01 s; the parallel runs restart from its 0.32 s
                 and go through the stop at 0.34 s to 0.35 s; with FUpdate
                 plain (the tutorial's) and compatible (the friction at
-                the wall's held points).
+                the wall's held points; asserted within the larger of
+                TOL and ten times a serial control's round-off growth,
+                roundoff_growth);
+  oblique blocks  test/cases/bodyFriction.py's case with faceB's side
+                nodes sticking (mu 0.8, compatible) to 6e-4 s: simple
+                (1 2 1) on 2 ranks cuts both contact faces (8+2, 4+8),
+                scotch on 3 cuts faceB (sticking_nodes; energies at
+                STICKING_GROUPS' tolerance).
 
 Decompositions (system/decomposeOptions: numberOfSubdomains, method,
 coefficients):
@@ -99,6 +106,12 @@ NUMBER = re.compile(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?")
 MONITOR_GROUPS = (
     (re.compile(r"^[pL][xyz](\(\w+\))?$"), 1e-12),
     (re.compile(r"^(kinetic|strain|total)Energy(\(\w+\))?$"), 3e-12))
+#: The sticking blocks: the strain energy W(F) of strains of 1e-3 carries
+#: F's round-off divided by the strain (1e-16 of 1 in F, 1e-13 of W),
+#: summed over the cells: 2.2e-11 of the largest energy measured
+#: (2026-12-07) where lm and F agree to 6e-13; asserted at 5e-11
+STICKING_GROUPS = (MONITOR_GROUPS[0],
+                   (MONITOR_GROUPS[1][0], 5e-11))
 #: barCollision plain 2 x 2: the serial run breaks the bars' y-z symmetry
 #: in one step (step 91: p_z of bar1 from 1e-17 to 2e-13 kg m/s, 4e-12 of
 #: its p_x) where metis2 and apart2 keep it, and a run whose contact
@@ -203,7 +216,7 @@ def faces_per_processor(case, nprocs, patches):
 
 
 def compare(label, case, serial, n_cells, patches, speed, problems,
-            tol=TOL, after=0.0):
+            tol=TOL, after=0.0, groups=MONITOR_GROUPS):
     """Every field written after time 'after', the contact entries (their
     numbers, velocities, to tol of speed), the monitor and the contact
     rows against the serial run's; the worst relative difference (a
@@ -242,7 +255,7 @@ def compare(label, case, serial, n_cells, patches, speed, problems,
         problems.append("%s: %d steps, serial %d" % (label, len(pm["Time"]),
                                                      len(sm["Time"])))
         return np.inf, "steps"
-    for pattern, group_tol in MONITOR_GROUPS:
+    for pattern, group_tol in groups:
         group = [c for c in sm if pattern.match(c)]
         scale = max(np.abs(whole[c]).max() for c in group)
         for c in group:
@@ -428,6 +441,51 @@ def roundoff_growth(base, folder, serial, n_cells):
             % (T_PARALLEL, growth, max(TOL, 10 * growth)))
 
 
+def sticking_nodes(root, problems):
+    """bodyFriction's oblique blocks with faceB's side nodes sticking (mu
+    0.8, FUpdate compatible): serial, then simple (1 2 1) on 2 ranks
+    (both contact faces cut) and scotch on 3, within TOL; the report.
+    A point shared by ranks sticks on all of them (compatible::
+    holdSticking): held only where a face decided it, the ranks' point
+    velocities parted."""
+    import bodyFriction
+    patches = ("faceA", "faceB")
+    serial = bodyFriction.make_case(
+        os.path.join(root, "sticking", "serial"),
+        friction=(bodyFriction.MU_STICK, bodyFriction.MU_STICK),
+        nb=bodyFriction.N + 2, update="compatible", nodes=True)
+    for key, value in cases.precise_output().items():
+        run.foam_set(serial, "system/controlDict", key, value)
+    run.run(["touchFoam"], serial, timeout=testing.RUN_TIMEOUT)
+    base = os.path.join(root, "sticking", "base")
+    shutil.copytree(serial, base, ignore=lambda folder, names: [
+        n for n in names if folder == serial and (
+            n in ("postProcessing",) or n.startswith("log.")
+            or (re.match(r"^[0-9.e-]+$", n) and n != "0"))])
+    n_cells = mesh.PolyMesh(serial).n_cells
+    rows, worst = [], (0.0, "")
+    for label, decomp, must_cut in (
+            ("simple2", {"numberOfSubdomains": 2, "method": "simple",
+                         "simpleCoeffs": {"n": "(1 2 1)"}}, patches),
+            ("scotch3", plain_method("scotch", 3), ())):
+        case = os.path.join(root, "sticking", label)
+        nprocs = run_decomposed(base, case, decomp)
+        counts = faces_per_processor(case, nprocs, patches)
+        rows.append("%s %s/%s" % (label, "+".join(map(str, counts["faceA"])),
+                                  "+".join(map(str, counts["faceB"]))))
+        if must_cut and min(counts["faceA"] + counts["faceB"]) == 0:
+            problems.append("sticking %s: a contact face not on every rank"
+                            " (%s, %s)" % (label, counts["faceA"],
+                                           counts["faceB"]))
+        d = compare("sticking " + label, case, serial, n_cells, patches,
+                    bodyFriction.V, problems, groups=STICKING_GROUPS)
+        if d[0] >= worst[0]:
+            worst = (d[0], "%s, %s" % (d[1], label))
+    return ("oblique blocks, side nodes sticking (mu %g, faces per rank"
+            " faceA/faceB: %s): max rel diff %.1e (%s)"
+            % (bodyFriction.MU_STICK, ", ".join(rows), worst[0], worst[1]))
+
+
 def ball(root, problems):
     """sphereImpact -variant wall -n 4 to 10 us: serial, then metis on 2
     ranks with a rank that has no face of the wall; the report."""
@@ -481,6 +539,7 @@ def body():
     lines.append(ball(root, problems))
     lines.append(block(root, problems))
     lines.append(block(root, problems, "compatible"))
+    lines.append(sticking_nodes(root, problems))
     return testing.verdict(lines, problems)
 
 

@@ -402,6 +402,22 @@ void Foam::contactSurfaces::completeReport
 }
 
 
+void Foam::contactSurfaces::setMaterialImpedances(const mechanicalLaw& law)
+{
+    scalarField Zs(start_.last(), Zero);
+    forAll(patches_, s)
+    {
+        const labelUList& faceCells =
+            mesh_.boundary()[patches_[s]].faceCells();
+        forAll(faceCells, i)
+        {
+            Zs[start_[s] + i] = law.rho(faceCells[i])*law.Us(faceCells[i]);
+        }
+    }
+    materialZs_ = gather(Zs);
+}
+
+
 // * * * * * * * * * * * * * Explicit Instantiations * * * * * * * * * * * //
 
 //- The gather of side nodes' slots (contactSurfacesNodes.C)

@@ -292,8 +292,9 @@ Foam::scalar Foam::contactSurfaces::pairShearImpedance
 {
     const label gk = globalFaces_.localStart() + k;
     const label g = findLower(pointStart_, slot + 1);
-    return Zs_[gk]*Zs_[g]/(Zs_[gk] + Zs_[g]);
+    return materialZs_[gk]*materialZs_[g]/(materialZs_[gk] + materialZs_[g]);
 }
+
 
 
 void Foam::contactSurfaces::reportNodeFriction

@@ -263,6 +263,10 @@ Foam::deformationUpdates::compatible::compatible
     {
         faces.contact().checkNodesFriction(faces.lm(), controls);
     }
+    if (nodeFriction_)
+    {
+        faces.contact().setMaterialImpedances(law);
+    }
     if (nodeFriction_ || wallFriction_)
     {
         calcFrictionAreas();
