@@ -15,7 +15,15 @@ with FUpdate compatible (the default) and plain:
               those of the same bar on a rigid wall (variant wall) to
               1e-10 of their magnitudes, bar2 the mirror image of bar1
               to 1e-10; the bars' momenta reversed (reported: they equal
-              the wall's rebound, 0.958 of the initial on this mesh);
+              the wall's rebound, 0.960 of the initial on this mesh);
+  tutorial    equal (compatible) on the tutorial's 100 cells a metre:
+              all of the above (the bars the bar on the wall to 1e-10);
+  rebound     equal (compatible) on 800 cells a metre: all of the above
+              but the wall's bar (reported: 4e-8, round-off at v/c =
+              1e-4 over 8000 steps), and the momenta reversed within 1 %
+              of the initial ones (issue 28, acceptance 2; the rebound
+              converges as about h^0.6, the loss at the fronts of issue
+              35);
   unequal     bar1 (1 m, 0.1 m/s) hits bar2 (2 m) at rest: contact stress
               Z v/2 within 1 %; at the end bar1's momentum below 1 % of
               its initial one, bar2's within 1 % of it;
@@ -60,6 +68,13 @@ from touchfoam.foamfile import read_field  # noqa: E402
 
 NAME = "barCollision"
 N = 50
+#: The mesh on which the equal bars' velocities come out reversed within
+#: 1 % (0.9602 on 50, 0.9743 on 100, 0.9898 on 400, 0.99365 on 800:
+#: validation/barCollision/FINDINGS.md 2)
+N_REBOUND = 800
+#: Each bar's fields against the bar on the rigid wall (and bar2 against
+#: bar1's mirror image), on their largest magnitudes over the run
+WALL_TOLERANCE = 1e-10
 
 #: The restart's report: each field's difference on its size at an O(1)
 #: deformation (rho0 c, 1, lambda + 2 mu); asserted to be zero
@@ -108,13 +123,20 @@ def plateau(name, r, failures):
                            100 * r["plateauError"]))
 
 
-def equal(root, failures, update):
-    collision = tutorial_case(root, "equal-" + update, ["-n", str(N)],
-                              update)
-    wall = tutorial_case(root, "wall-" + update,
-                         ["-n", str(N), "-variant", "wall"], update)
+def equal(root, failures, update, n=N, reversed_within=None,
+          as_wall=WALL_TOLERANCE):
+    """reversed_within: the bars' end momenta asserted within this
+    fraction of the initial ones, reversed (None: only that they move
+    back, the rebound is reported); as_wall: the tolerance of the bars'
+    fields against the bar on the wall and its mirror (None: reported)."""
+    suffix = "" if n == N else "-n%d" % n
+    collision = tutorial_case(root, "equal-" + update + suffix,
+                              ["-n", str(n)], update)
+    wall = tutorial_case(root, "wall-" + update + suffix,
+                         ["-n", str(n), "-variant", "wall"], update)
     r = analyse(collision)
-    lines = ["equal (%s): " % update + plateau("equal", r, failures)]
+    lines = ["equal (%s, %d cells a metre): " % (update, n)
+             + plateau("equal", r, failures)]
 
     exact = r["contactTimeExact"]
     if abs(r["contactTime"] - exact) > r["step"] + 0.01 * exact:
@@ -124,10 +146,11 @@ def equal(root, failures, update):
                  % (r["contactTime"], exact, r["step"]))
 
     # Reversed: bar1 moves back, bar2 its mirror
-    if not (r["bar1End"] < -0.9 and abs(r["bar1End"] + r["bar2End"])
+    bound = -0.9 if reversed_within is None else -(1 - reversed_within)
+    if not (r["bar1End"] < bound and abs(r["bar1End"] + r["bar2End"])
             < 1e-12):
-        failures.append("equal: momenta at the end %.5f, %.5f of the"
-                        " initial" % (r["bar1End"], r["bar2End"]))
+        failures.append("equal (%d): momenta at the end %.5f, %.5f of the"
+                        " initial" % (n, r["bar1End"], r["bar2End"]))
     wall_r = analyse(wall)
     lines.append("momenta at the end %.5f, %.5f of the initial (wall"
                  " rebound: energy %.6f E0 both)"
@@ -136,13 +159,15 @@ def equal(root, failures, update):
     first, mirror, n_times = compare_with_wall(collision, wall)
     worst = max(first.values())
     worst_mirror = max(mirror.values())
-    if n_times < 5 or worst > 1e-10 or worst_mirror > 1e-10:
-        failures.append("equal: bar1 off the wall's bar by %.2e, bar2 off"
-                        " the mirror by %.2e (%d times)"
-                        % (worst, worst_mirror, n_times))
+    if n_times < 5 or (as_wall is not None
+                       and max(worst, worst_mirror) > as_wall):
+        failures.append("equal (%d): bar1 off the wall's bar by %.2e, bar2"
+                        " off the mirror by %.2e (%d times)"
+                        % (n, worst, worst_mirror, n_times))
     lines.append("bar1 = the bar on the rigid wall to %.1e, bar2 = its"
-                 " mirror to %.1e (%d times)" % (worst, worst_mirror,
-                                                 n_times))
+                 " mirror to %.1e (%d times%s)"
+                 % (worst, worst_mirror, n_times,
+                    "" if as_wall is not None else ", not asserted"))
     lines.append(common("equal", r, failures))
     return ", ".join(lines)
 
@@ -240,6 +265,17 @@ def body():
     for update in ("compatible", "plain"):
         for check in (equal, unequal, bimaterial):
             lines.append(check(root, failures, update))
+    # The tutorial's mesh: the bars the bar on the wall to 1e-10 (2e-8
+    # before the limiter's round-off tolerance was each body's own)
+    lines.append(equal(root, failures, "compatible", 100))
+    # The rebound converges as about h^0.6 (the limited scheme's loss at
+    # the fronts, issue 35): reversed within 1 % from 800 cells a metre.
+    # There the bars part from the wall's bar by 4e-8 of their largest
+    # values: at v/c = 1e-4 a unit in the last place of F is 2.2e-12 of
+    # max |lm|, and the two contacts' arithmetic differs in it from the
+    # first step (validation/barCollision/FINDINGS.md 2); reported
+    lines.append(equal(root, failures, "compatible", N_REBOUND, 0.01,
+                       as_wall=None))
     lines.append(restart(root, failures))
     for update in ("compatible", "plain"):
         lines.append(nonmatching(root, failures, update))

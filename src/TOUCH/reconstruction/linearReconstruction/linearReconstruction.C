@@ -186,6 +186,8 @@ Foam::linearReconstruction::linearReconstruction
       ? gradientLimiter::New(dict)
       : autoPtr<gradientLimiter>()
     ),
+    cellBody_(),
+    nBodies_(0),
     boundaryFacePatch_(mesh.nFaces() - mesh.nInternalFaces(), -1),
     pNeighbour_(mesh.boundary().size()),
     PNeighbour_(mesh.boundary().size()),
@@ -216,6 +218,10 @@ Foam::linearReconstruction::linearReconstruction
     if (limiter_.valid())
     {
         momentumLimiter_.setSize(mesh.nCells());
+
+        const solidBodies bodies(mesh);
+        cellBody_ = bodies.cellBody();
+        nBodies_ = bodies.size();
     }
 
     forAll(mirrorSigns, patchi)

@@ -97,25 +97,39 @@ void Foam::linearReconstruction::updateCells
     // tolerance of round-off itself, and its limiter followed the round-off
     // of each decomposition (serial and parallel parted at first contact)
     // and of each step sequence (the ring's L_z grew to 2e-7).  For p the
-    // largest range of a component over the mesh, not the largest |p|: a
-    // uniform drift changes no increment, and so no limiter factor
-    // (Galilean invariance, test slidingWallInvariance)
+    // largest range of a component, not the largest |p|: a uniform drift
+    // changes no increment, and so no limiter factor (Galilean invariance,
+    // test slidingWallInvariance).  The range within a body, the largest
+    // of the bodies': two bars meeting at +-v are not a field of range 2 v,
+    // and each must be the bar on a rigid wall (test barCollision; with the
+    // range over the mesh the two parted by 2e-8 of max |p| on 100 cells a
+    // metre).  Not each body's own: a body at rest that is hit then had a
+    // tolerance near the round-off of the exchange, and serial and
+    // parallel parted at a sticking decision (test contactParallel)
     scalar pTolerance = 0;
     scalar PTolerance = 0;
     if (limited)
     {
-        vector pMax(vector::uniform(-GREAT));
-        vector pMin(vector::uniform(GREAT));
+        List<vector> pMax(nBodies_, vector::uniform(-GREAT));
+        List<vector> pMin(nBodies_, vector::uniform(GREAT));
         forAll(pi, c)
         {
-            pMax = max(pMax, pi[c]);
-            pMin = min(pMin, pi[c]);
+            const label b = cellBody_[c];
+            pMax[b] = max(pMax[b], pi[c]);
+            pMin[b] = min(pMin[b], pi[c]);
             PTolerance = max(PTolerance, magSqr(Pi[c]));
         }
-        reduce(pMax, maxOp<vector>());
-        reduce(pMin, minOp<vector>());
+        Pstream::listCombineGather(pMax, maxEqOp<vector>());
+        Pstream::listCombineScatter(pMax);
+        Pstream::listCombineGather(pMin, minEqOp<vector>());
+        Pstream::listCombineScatter(pMin);
         reduce(PTolerance, maxOp<scalar>());
-        pTolerance = roundOff_*max(cmptMax(pMax - pMin), scalar(0));
+
+        forAll(pMax, b)
+        {
+            pTolerance = max(pTolerance, cmptMax(pMax[b] - pMin[b]));
+        }
+        pTolerance *= roundOff_;
         PTolerance = roundOff_*Foam::sqrt(PTolerance);
     }
     const packedMomentumStress tolerance
