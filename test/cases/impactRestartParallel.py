@@ -75,7 +75,7 @@ CONTACT_COLUMN = "contactFaces(%s)" % WALL
 #: (tutorial, n, steps, restart step, law state fields)
 CASES = [("taylorImpact", 3, 300, 150, ("epsilonP", "CpInv")),
          ("barRebound", 3, 160, 100, ())]
-RESTART_FIELDS = ("lm", "F", "D", "pointD")
+RESTART_FIELDS = ("lm", "F", "gradD", "D", "pointD")
 PARALLEL_FIELDS = ("lm", "U", "F", "P", "sigma", "sigmaEq", "pressure", "J",
                    "D", "pointD", "contact")
 #: monitor columns, in groups compared on the group's largest value (L_y

@@ -54,7 +54,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 from touchfoam import cases, run, testing  # noqa: E402
 
 NAME = "killRestart"
-FILES = ("lm", "F", "D", "pointD", "U")
+FILES = ("lm", "F", "gradD", "D", "pointD", "U")
 CONTROL = {"endTime": 0.1, "writeControl": "timeStep", "writeInterval": 1,
            "writePrecision": 12}
 TIME = re.compile(r"^[0-9][0-9.e+-]*$")

@@ -35,10 +35,10 @@ Asserted at the end:
             (sorted: the cells come in processor order) to 1e-12;
   restart   from the folder at N/2 with D, pointD, U renamed u, pointU, v
             (a folder of the former names) the run ends with the straight
-            run's lm, F, D and pointD bit for bit, says in its log that it
-            read u and pointU, and writes D and pointD; a control with the
-            displacements deleted ends with another D (so the test sees
-            whether they are read).
+            run's lm, F, gradD, D and pointD bit for bit, says in its log
+            that it read u and pointU, and writes D and pointD; a control
+            with the displacements deleted ends with another D (so the
+            test sees whether they are read).
 Work folders: test/runs/outputFields/.
 """
 
@@ -58,10 +58,10 @@ from touchfoam import cases, foamfile, mesh, run, testing  # noqa: E402
 
 NAME = "outputFields"
 WALL = "wall"
-WRITTEN = ("lm", "F", "D", "pointD", "U", "P", "sigma", "sigmaEq",
+WRITTEN = ("lm", "F", "gradD", "D", "pointD", "U", "P", "sigma", "sigmaEq",
            "pressure", "J", "contact", "epsilonP", "CpInv")
 FORMER = ("v", "u", "pointU")
-STATE = ("lm", "F", "D", "pointD")
+STATE = ("lm", "F", "gradD", "D", "pointD")
 #: renamed in the restart folder: new name -> former name
 RENAMED = {"D": "u", "pointD": "pointU", "U": "v"}
 

@@ -427,7 +427,7 @@ int main(int argc, char *argv[])
         solid.writeOutputFields();
     }
 
-    // The state a restart reads (lm, F, D, pointD, the law's state: the
+    // The state a restart reads (lm, F, gradD, D, pointD, the law's state: the
     // objects that write themselves with the time) is written with at
     // least 17 significant digits whatever writePrecision says, so that a
     // restart continues exactly; the fields written for viewing (U, J,

@@ -11,7 +11,9 @@ Description
     Checks every constitutive model: P(I) = 0, P = dpsi/dF (central finite
     differences), frame invariance P(QF) = Q P(F) (exact for neoHookean, to
     second order in the rotation angle for linearElastic, which is a
-    small-strain law), neoHookean -> linearElastic for small strain, the
+    small-strain law), neoHookean -> linearElastic for small strain (and
+    to first order down to strains of 1e-12 in the displacement gradient:
+    P(F, gradD), which equals P(F) at finite strain), the
     cofactor convention cof F = J F^-T, closed-form stresses (E 1e6,
     nu 0.3: mu = E/(2(1 + nu)), lambda = E nu/((1 + nu)(1 - 2 nu)),
     kappa = lambda + 2 mu/3):
@@ -191,6 +193,12 @@ int main(int argc, char *argv[])
                 mag(P - numericalStress(*law, F))/mag(P),
                 1e-6
             );
+            report.check
+            (
+                model + ": P(F, gradD = F - I) = P(F)",
+                mag(law->P(F, F - tensor::I) - P)/mag(P),
+                1e-13
+            );
         }
 
         if (model == "neoHookean")
@@ -222,6 +230,22 @@ int main(int argc, char *argv[])
                   + Foam::name(strain),
                     mag(law->P(F) - Pl)/mag(Pl),
                     10*strain
+                );
+            }
+
+            // Written in gradD the two agree to first order down to any
+            // strain (from F, a strain of 1e-9 keeps 7 digits only: 2e-7)
+            for (const scalar strain : {1e-6, 1e-9, 1e-12})
+            {
+                const tensor gradD(strain*(randomF(rnd, 1) - tensor::I));
+                const tensor F(tensor::I + gradD);
+                const tensor Pl(linear->P(F, gradD));
+                report.check
+                (
+                    model + "(gradD) -> linearElastic(gradD), strain "
+                  + Foam::name(strain),
+                    mag(law->P(F, gradD) - Pl)/mag(Pl),
+                    10*strain + 1e-14
                 );
             }
         }

@@ -78,7 +78,7 @@ void Foam::touchSolid::computeRates(const label stage)
         // The cell positions across processor faces (the rigid spin)
         D_.correctBoundaryConditions();
     }
-    law_->correct(F_, P_);
+    law_->correct(F_, gradD_.primitiveField(), P_);
     if (nodalAveraging_)
     {
         nodalAveraging_->correct
@@ -190,6 +190,11 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
         dimensionedTensor("I", dimless, tensor::I),
         calculatedFvPatchTensorField::typeName
     ),
+    gradD_
+    (
+        fieldIO(mesh, "gradD", IOobject::NO_READ, IOobject::AUTO_WRITE),
+        F_ - dimensionedTensor("I", dimless, tensor::I)
+    ),
     D_
     (
         fieldIO(mesh, "D", IOobject::NO_READ, IOobject::AUTO_WRITE),
@@ -226,7 +231,7 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     ),
     timeStep_(controls_, faces_, *law_),
     lm0_(mesh.nCells()),
-    F0_(mesh.nCells()),
+    gradD0_(mesh.nCells()),
     D0_(mesh.nCells()),
     pointD0_(mesh.nPoints()),
     lmRate_(mesh.nCells()),
@@ -242,6 +247,7 @@ Foam::touchSolid::touchSolid(const fvMesh& mesh)
     boundaryWork_(nullptr)
 {
     checkTwoD();
+    initialiseDisplacementGradient();
 
     // The correction's inertia and energy are those of one density
     if (preserveAngularMomentum_ && !law_->uniformMaterial())
@@ -301,7 +307,7 @@ bool Foam::touchSolid::advance(const scalar dt)
 void Foam::touchSolid::storeOldTime()
 {
     lm0_ = lm_.primitiveField();
-    F0_ = F_.primitiveField();
+    gradD0_ = gradD_.primitiveField();
     D0_ = D_.primitiveField();
     pointD0_ = pointD_.primitiveField();
     law_->storeOldTime();
@@ -335,6 +341,7 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
 
     vectorField& lm = lm_.primitiveFieldRef();
     tensorField& F = F_.primitiveFieldRef();
+    tensorField& gradD = gradD_.primitiveFieldRef();
     vectorField& D = D_.primitiveFieldRef();
     vectorField& pointD = pointD_.primitiveFieldRef();
     const vectorField& pointV = pointV_.primitiveField();
@@ -353,9 +360,10 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
     {
         const scalar dtByRhoi = uniform ? dtByRho : dt/law_->rho(celli);
         D[celli] = alpha*D0_[celli] + beta*(D[celli] + dtByRhoi*lm[celli]);
-        F[celli] =
-            alpha*F0_[celli]
-          + beta*(F[celli] + (dt*invV[celli])*FRate_[celli]);
+        gradD[celli] =
+            alpha*gradD0_[celli]
+          + beta*(gradD[celli] + (dt*invV[celli])*FRate_[celli]);
+        F[celli] = tensor::I + gradD[celli];
     }
     forAll(pointD, pointi)
     {
@@ -426,7 +434,8 @@ void Foam::touchSolid::advanceStage(const label stage, const scalar dt)
 void Foam::touchSolid::restoreOldTime()
 {
     lm_.primitiveFieldRef() = lm0_;
-    F_.primitiveFieldRef() = F0_;
+    gradD_.primitiveFieldRef() = gradD0_;
+    F_.primitiveFieldRef() = tensor::I + gradD0_;
     D_.primitiveFieldRef() = D0_;
     pointD_.primitiveFieldRef() = pointD0_;
     law_->restoreOldTime();

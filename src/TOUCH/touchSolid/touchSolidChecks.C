@@ -69,7 +69,7 @@ void Foam::touchSolid::checkInput() const
     // finite with J > 0, and would stop the first step with a
     // floating-point trap: name it while the input is read
     tensorField P(F_.size());
-    law_->stress(F_.primitiveField(), P);
+    law_->stress(F_.primitiveField(), gradD_.primitiveField(), P);
     forAll(P, celli)
     {
         if (!std::isfinite(magSqr(P[celli])))

@@ -205,6 +205,51 @@ Foam::tmp<Foam::scalarField> Foam::touchSolid::cellDensity
 }
 
 
+void Foam::touchSolid::initialiseDisplacementGradient()
+{
+    const tensorField& F = F_.primitiveField();
+    tensorField& gradD = gradD_.primitiveFieldRef();
+
+    IOobject gradDIO(inputIO(mesh_, gradD_.name()));
+    if (fieldExists<volTensorField>(gradDIO))
+    {
+        const volTensorField written(gradDIO, mesh_);
+
+        // The written gradD is the state where it forms the written F to
+        // the digits F was written with (touchFoam's 17, decomposePar's
+        // writePrecision, binary's all): an F edited since wins
+        const scalar digit =
+            Foam::pow(10.0, 1 - scalar(IOstream::defaultPrecision()));
+        label edited = 0;
+        forAll(F, celli)
+        {
+            const tensor formed(tensor::I + written[celli]);
+            if
+            (
+                formed != F[celli]
+             && cmptMax(cmptMag(formed - F[celli]))
+              > digit*max(1, cmptMax(cmptMag(F[celli])))
+            )
+            {
+                ++edited;
+            }
+        }
+
+        if (returnReduce(edited, sumOp<label>()) == 0)
+        {
+            gradD = written.primitiveField();
+            return;
+        }
+
+        WarningInFunction
+            << gradDIO.objectPath() << " does not form the F read beside it"
+            << " in " << returnReduce(edited, sumOp<label>()) << " cells (F"
+            << " edited since it was written): gradD is taken as F - I"
+            << endl;
+    }
+}
+
+
 Foam::tmp<Foam::volVectorField> Foam::touchSolid::initialMomentum
 (
     const fvMesh& mesh,
@@ -228,8 +273,8 @@ Foam::tmp<Foam::volVectorField> Foam::touchSolid::initialMomentum
         FatalErrorInFunction
             << "Time folder " << mesh.time().timePath() << " holds neither"
             << " lm nor U: it is incomplete (a run stopped while writing"
-            << " it?). touchFoam writes lm, F, D and pointD at every write"
-            << " time." << nl
+            << " it?). touchFoam writes lm, F, gradD, D and pointD at every"
+            << " write time." << nl
             << "    Remove it (rm -r " << mesh.time().timeName() << ") to"
             << " restart from the previous write time" << nl
             << exit(FatalError);

@@ -205,7 +205,10 @@ void Foam::touchSolid::writeOutputFields()
 
     // Stress of the final state through the law's own path (P_ held the
     // last stage's)
-    law_->stress(F_.primitiveField(), P_.primitiveFieldRef());
+    law_->stress
+    (
+        F_.primitiveField(), gradD_.primitiveField(), P_.primitiveFieldRef()
+    );
     if (nodalAveraging_)
     {
         nodalAveraging_->correct

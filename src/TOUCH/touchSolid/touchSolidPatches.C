@@ -238,6 +238,7 @@ void Foam::touchSolid::constrainEmptyDirections()
     const Vector<label>& solutionD = mesh_.solutionD();
     vectorField& lm = lm_.primitiveFieldRef();
     tensorField& F = F_.primitiveFieldRef();
+    tensorField& gradD = gradD_.primitiveFieldRef();
 
     for (direction d = 0; d < vector::nComponents; ++d)
     {
@@ -250,12 +251,15 @@ void Foam::touchSolid::constrainEmptyDirections()
         {
             lm[celli][d] = 0;
             tensor& Fc = F[celli];
+            tensor& Gc = gradD[celli];
             for (direction i = 0; i < vector::nComponents; ++i)
             {
                 if (i != d)
                 {
                     Fc[3*i + d] = 0;
                     Fc[3*d + i] = 0;
+                    Gc[3*i + d] = 0;
+                    Gc[3*d + i] = 0;
                 }
             }
         }

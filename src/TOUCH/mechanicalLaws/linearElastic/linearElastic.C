@@ -40,6 +40,16 @@ Foam::tensor Foam::mechanicalLaws::linearElastic::P(const tensor& F) const
 }
 
 
+Foam::tensor Foam::mechanicalLaws::linearElastic::P
+(
+    const tensor&,
+    const tensor& gradD
+) const
+{
+    return mu_*(gradD + gradD.T()) + lambda_*tr(gradD)*tensor::I;
+}
+
+
 Foam::scalar Foam::mechanicalLaws::linearElastic::strainEnergy
 (
     const tensor& F

@@ -222,6 +222,44 @@ void Foam::mechanicalLaw::correct(const volTensorField& F, volTensorField& P)
 }
 
 
+void Foam::mechanicalLaw::stress
+(
+    const tensorField& F,
+    const tensorField& gradD,
+    tensorField& P
+) const
+{
+    if (hasState())
+    {
+        stress(F, P);
+        return;
+    }
+
+    forAll(F, celli)
+    {
+        P[celli] = this->P(F[celli], gradD[celli]);
+    }
+}
+
+
+void Foam::mechanicalLaw::correct
+(
+    const volTensorField& F,
+    const tensorField& gradD,
+    volTensorField& P
+)
+{
+    if (hasState())
+    {
+        correct(F, P);
+        return;
+    }
+
+    stress(F.primitiveField(), gradD, P.primitiveFieldRef());
+    P.correctBoundaryConditions();
+}
+
+
 Foam::scalar Foam::mechanicalLaw::volumetricEnergy(const scalar) const
 {
     FatalErrorInFunction

@@ -47,6 +47,29 @@ Foam::tensor Foam::mechanicalLaws::neoHookean::P(const tensor& F) const
 }
 
 
+Foam::tensor Foam::mechanicalLaws::neoHookean::P
+(
+    const tensor&,
+    const tensor& G
+) const
+{
+    // With F = I + G (G = gradD): J - 1 = I1 + I2 + I3, the invariants of
+    // G, and cof F = I + A, A = I1 I - G^T + cof G, so that P(F) above is
+    //     mu J^-2/3 (G - (s - 1) I - s A) + kappa (J - 1)(I + A),
+    // s = (F && F)/(3 J), every term of which vanishes with G
+    const scalar I1 = tr(G);
+    const scalar I2 = 0.5*(sqr(I1) - tr(G & G));
+    const scalar Jm1 = I1 + I2 + det(G);
+    const scalar J = 1 + Jm1;
+    const tensor A(I1*tensor::I - G.T() + cof(G));
+    const scalar sm1 = ((G && G) - I1 - 3*(Jm1 - I1))/(3*J);
+
+    return
+        mu_*isochoricFactor(J)*(G - sm1*tensor::I - (1 + sm1)*A)
+      + kappa_*Jm1*(tensor::I + A);
+}
+
+
 Foam::scalar Foam::mechanicalLaws::neoHookean::strainEnergy
 (
     const tensor& F

@@ -275,6 +275,17 @@ void Foam::mechanicalLaws::zoned::stress
     tensorField& P
 ) const
 {
+    stress(F, F - tensor::I, P);
+}
+
+
+void Foam::mechanicalLaws::zoned::stress
+(
+    const tensorField& F,
+    const tensorField& gradD,
+    tensorField& P
+) const
+{
     forAll(laws_, m)
     {
         const mechanicalLaw& law = laws_[m];
@@ -294,7 +305,7 @@ void Foam::mechanicalLaws::zoned::stress
         {
             for (const label celli : zoneCells_[m])
             {
-                P[celli] = law.P(F[celli]);
+                P[celli] = law.P(F[celli], gradD[celli]);
             }
         }
     }
@@ -304,6 +315,17 @@ void Foam::mechanicalLaws::zoned::stress
 void Foam::mechanicalLaws::zoned::correct
 (
     const volTensorField& F,
+    volTensorField& P
+)
+{
+    correct(F, F.primitiveField() - tensor::I, P);
+}
+
+
+void Foam::mechanicalLaws::zoned::correct
+(
+    const volTensorField& F,
+    const tensorField& gradD,
     volTensorField& P
 )
 {
@@ -336,7 +358,7 @@ void Foam::mechanicalLaws::zoned::correct
             const tensorField& FI = F.primitiveField();
             for (const label celli : zoneCells_[m])
             {
-                PI[celli] = law.P(FI[celli]);
+                PI[celli] = law.P(FI[celli], gradD[celli]);
             }
         }
     }
