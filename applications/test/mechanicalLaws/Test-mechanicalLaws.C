@@ -199,6 +199,13 @@ int main(int argc, char *argv[])
                 mag(law->P(F, F - tensor::I) - P)/mag(P),
                 1e-13
             );
+            report.check
+            (
+                model + ": psi(F, gradD = F - I) = psi(F)",
+                mag(law->strainEnergy(F, F - tensor::I) - law->strainEnergy(F))
+               /law->strainEnergy(F),
+                1e-13
+            );
         }
 
         if (model == "neoHookean")
@@ -247,6 +254,20 @@ int main(int argc, char *argv[])
                     mag(law->P(F, gradD) - Pl)/mag(Pl),
                     10*strain + 1e-14
                 );
+
+                // The energy, of second order, keeps 1e-16/strain of
+                // itself (from F: 1e-16/strain^2, 1e-4 at 1e-6)
+                if (strain > 1e-8)
+                {
+                    const scalar psil = linear->strainEnergy(F, gradD);
+                    report.check
+                    (
+                        model + " psi(gradD) -> linearElastic, strain "
+                      + Foam::name(strain),
+                        mag(law->strainEnergy(F, gradD) - psil)/psil,
+                        10*strain
+                    );
+                }
             }
         }
         else

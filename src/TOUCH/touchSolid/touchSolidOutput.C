@@ -112,7 +112,7 @@ Foam::scalar Foam::touchSolid::strainEnergy() const
         return nodalAveraging_->totalStrainEnergy(*law_, F_);
     }
 
-    return law_->totalStrainEnergy(F_);
+    return law_->totalStrainEnergy(F_, gradD_);
 }
 
 
@@ -174,9 +174,12 @@ void Foam::touchSolid::writeSummary(Ostream& os) const
 
 void Foam::touchSolid::prepareWrite()
 {
-    // F and D write themselves with the state; J, sigma, sigmaEq and
-    // pressure take their patches from F's
+    // F, gradD and D write themselves with the state; J, sigma, sigmaEq
+    // and pressure take their patches from F's
     cellValuesOnPatches(F_);
+    // Its processor values too: the stages exchange F's only
+    gradD_.correctBoundaryConditions();
+    cellValuesOnPatches(gradD_);
     cellValuesOnPatches(D_);
 }
 

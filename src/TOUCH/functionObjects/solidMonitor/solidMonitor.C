@@ -132,7 +132,7 @@ Foam::scalarField Foam::functionObjects::solidMonitor::bodySums() const
     );
 
     scalarField strain(V.size());
-    law.cellStrainEnergy(solid.F(), strain);
+    law.cellStrainEnergy(solid.F(), solid.gradD(), strain);
     const tmp<scalarField> tPlastic(cellPlasticWork());
     const scalarField& plastic = tPlastic();
 

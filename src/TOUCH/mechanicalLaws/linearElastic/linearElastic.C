@@ -61,4 +61,16 @@ Foam::scalar Foam::mechanicalLaws::linearElastic::strainEnergy
 }
 
 
+Foam::scalar Foam::mechanicalLaws::linearElastic::strainEnergy
+(
+    const tensor&,
+    const tensor& gradD
+) const
+{
+    const symmTensor eps(symm(gradD));
+
+    return mu_*(eps && eps) + 0.5*lambda_*sqr(tr(eps));
+}
+
+
 // ************************************************************************* //

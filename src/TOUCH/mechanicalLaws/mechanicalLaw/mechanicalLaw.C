@@ -312,4 +312,49 @@ void Foam::mechanicalLaw::cellStrainEnergy
 }
 
 
+Foam::scalar Foam::mechanicalLaw::totalStrainEnergy
+(
+    const volTensorField& F,
+    const tensorField& gradD
+) const
+{
+    if (hasState())
+    {
+        return totalStrainEnergy(F);
+    }
+
+    const scalarField& V = mesh_.V();
+    scalar energy = 0;
+
+    forAll(V, celli)
+    {
+        energy += V[celli]*strainEnergy(F[celli], gradD[celli]);
+    }
+
+    return returnReduce(energy, sumOp<scalar>());
+}
+
+
+void Foam::mechanicalLaw::cellStrainEnergy
+(
+    const volTensorField& F,
+    const tensorField& gradD,
+    scalarField& energy
+) const
+{
+    if (hasState())
+    {
+        cellStrainEnergy(F, energy);
+        return;
+    }
+
+    const scalarField& V = mesh_.V();
+
+    forAll(V, celli)
+    {
+        energy[celli] = V[celli]*strainEnergy(F[celli], gradD[celli]);
+    }
+}
+
+
 // ************************************************************************* //

@@ -81,4 +81,26 @@ Foam::scalar Foam::mechanicalLaws::neoHookean::strainEnergy
 }
 
 
+Foam::scalar Foam::mechanicalLaws::neoHookean::strainEnergy
+(
+    const tensor&,
+    const tensor& G
+) const
+{
+    // J^-2/3 (F && F) - 3 = (F && F - 3 J^2/3)/J^2/3 with, F = I + G,
+    //     F && F - 3 J^2/3 = G && G - 2 (I2 + I3) + (2 (J - 1) - 3 b),
+    // b = J^2/3 - 1 from expm1 and log1p: the terms of first order in G
+    // cancel exactly (2 I1 = 2 (J - 1) - 2 (I2 + I3)), not in round-off
+    const scalar I1 = tr(G);
+    const scalar I2 = 0.5*(sqr(I1) - tr(G & G));
+    const scalar I3 = det(G);
+    const scalar Jm1 = I1 + I2 + I3;
+    const scalar b = std::expm1((2.0/3.0)*std::log1p(Jm1));
+    const scalar isochoric =
+        ((G && G) - 2*(I2 + I3) + (2*Jm1 - 3*b))/(1 + b);
+
+    return 0.5*mu_*isochoric + 0.5*kappa_*sqr(Jm1);
+}
+
+
 // ************************************************************************* //

@@ -373,6 +373,16 @@ Foam::scalar Foam::mechanicalLaws::zoned::totalStrainEnergy
     const volTensorField& F
 ) const
 {
+    return totalStrainEnergy(F, F.primitiveField() - tensor::I);
+}
+
+
+Foam::scalar Foam::mechanicalLaws::zoned::totalStrainEnergy
+(
+    const volTensorField& F,
+    const tensorField& gradD
+) const
+{
     const scalarField& V = mesh_.V();
     scalar withState = 0;
     scalar local = 0;
@@ -390,7 +400,7 @@ Foam::scalar Foam::mechanicalLaws::zoned::totalStrainEnergy
         {
             for (const label celli : zoneCells_[m])
             {
-                local += V[celli]*law.strainEnergy(F[celli]);
+                local += V[celli]*law.strainEnergy(F[celli], gradD[celli]);
             }
         }
     }
@@ -402,6 +412,17 @@ Foam::scalar Foam::mechanicalLaws::zoned::totalStrainEnergy
 void Foam::mechanicalLaws::zoned::cellStrainEnergy
 (
     const volTensorField& F,
+    scalarField& energy
+) const
+{
+    cellStrainEnergy(F, F.primitiveField() - tensor::I, energy);
+}
+
+
+void Foam::mechanicalLaws::zoned::cellStrainEnergy
+(
+    const volTensorField& F,
+    const tensorField& gradD,
     scalarField& energy
 ) const
 {
@@ -426,7 +447,8 @@ void Foam::mechanicalLaws::zoned::cellStrainEnergy
         {
             for (const label celli : zoneCells_[m])
             {
-                energy[celli] = V[celli]*law.strainEnergy(F[celli]);
+                energy[celli] =
+                    V[celli]*law.strainEnergy(F[celli], gradD[celli]);
             }
         }
     }
