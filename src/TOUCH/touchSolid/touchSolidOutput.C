@@ -13,7 +13,7 @@ Description
     velocity; solidDisplacementFoam's D and sigmaEq; solids4foam's pointD),
     so that a user finds them in ParaView where expected: U, P, J, sigma,
     sigmaEq, pressure and, with a rigid wall, contact.  The state (lm, F,
-    D, pointD) writes itself.
+    gradD, D, pointD) writes itself.
 
 \*---------------------------------------------------------------------------*/
 
