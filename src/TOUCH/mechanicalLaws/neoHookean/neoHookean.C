@@ -20,6 +20,29 @@ namespace mechanicalLaws
 }
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- The invariants of G = gradD = F - I and J - 1 = I1 + I2 + I3 from them,
+//  without forming F (a small strain keeps its digits)
+struct gradientInvariants
+{
+    scalar I1, I2, I3, Jm1;
+
+    explicit gradientInvariants(const tensor& G)
+    :
+        I1(tr(G)),
+        I2(0.5*(sqr(I1) - tr(G & G))),
+        I3(det(G)),
+        Jm1(I1 + I2 + I3)
+    {}
+};
+
+} // End namespace Foam
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::mechanicalLaws::neoHookean::neoHookean
@@ -57,9 +80,9 @@ Foam::tensor Foam::mechanicalLaws::neoHookean::P
     // G, and cof F = I + A, A = I1 I - G^T + cof G, so that P(F) above is
     //     mu J^-2/3 (G - (s - 1) I - s A) + kappa (J - 1)(I + A),
     // s = (F && F)/(3 J), every term of which vanishes with G
-    const scalar I1 = tr(G);
-    const scalar I2 = 0.5*(sqr(I1) - tr(G & G));
-    const scalar Jm1 = I1 + I2 + det(G);
+    const gradientInvariants inv(G);
+    const scalar I1 = inv.I1;
+    const scalar Jm1 = inv.Jm1;
     const scalar J = 1 + Jm1;
     const tensor A(I1*tensor::I - G.T() + cof(G));
     const scalar sm1 = ((G && G) - I1 - 3*(Jm1 - I1))/(3*J);
@@ -91,10 +114,10 @@ Foam::scalar Foam::mechanicalLaws::neoHookean::strainEnergy
     //     F && F - 3 J^2/3 = G && G - 2 (I2 + I3) + (2 (J - 1) - 3 b),
     // b = J^2/3 - 1 from expm1 and log1p: the terms of first order in G
     // cancel exactly (2 I1 = 2 (J - 1) - 2 (I2 + I3)), not in round-off
-    const scalar I1 = tr(G);
-    const scalar I2 = 0.5*(sqr(I1) - tr(G & G));
-    const scalar I3 = det(G);
-    const scalar Jm1 = I1 + I2 + I3;
+    const gradientInvariants inv(G);
+    const scalar I2 = inv.I2;
+    const scalar I3 = inv.I3;
+    const scalar Jm1 = inv.Jm1;
     const scalar b = std::expm1((2.0/3.0)*std::log1p(Jm1));
     const scalar isochoric =
         ((G && G) - 2*(I2 + I3) + (2*Jm1 - 3*b))/(1 + b);
